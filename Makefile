@@ -1,0 +1,39 @@
+# The two commands of the README, over the CMake presets.
+#   make render   install dependencies, build (Release), render the built-in default scene to default.png
+#   make test     install dependencies, build, run the whole test suite
+# Also: make sanitize (tests under ASan + UBSan), make bench, make format, make examples.
+WERROR ?= $(if $(CI),ON,OFF)
+CMAKE_FLAGS = -DGLINT_WERROR=$(WERROR)
+
+.PHONY: deps build render test sanitize bench format examples clean
+
+deps:
+	./scripts/install-deps.sh
+
+build: deps
+	cmake --preset release $(CMAKE_FLAGS) >/dev/null
+	cmake --build --preset release
+
+render: build
+	./build/release/glint render -o default.png
+
+test: build
+	ctest --preset release
+
+sanitize: deps
+	cmake --preset sanitize $(CMAKE_FLAGS) >/dev/null
+	cmake --build --preset sanitize
+	ctest --preset sanitize
+
+bench: build
+	./build/release/bench/glint_bench_scene --benchmark_min_time=2
+
+format:
+	find src apps tests bench -name '*.cpp' -o -name '*.hpp' | xargs clang-format -i
+
+examples: build
+	mkdir -p build/examples
+	for f in examples/*.yaml; do ./build/release/glint render "$$f" -o build/examples/$$(basename "$$f" .yaml).png || exit 1; done
+
+clean:
+	rm -rf build

@@ -1,0 +1,179 @@
+// glint: the command-line tool. Thin by design: it parses flags and calls the library.
+//
+// Exit codes: 0 success; 2 bad input (scene file, flags, output path); 1 anything else.
+#include <unistd.h>
+
+#include <CLI/CLI.hpp>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <optional>
+#include <string>
+
+#include "glint/image/image_io.hpp"
+#include "glint/render/render.hpp"
+#include "glint/scene/scene.hpp"
+#include "glint/scene/scene_desc.hpp"
+
+namespace {
+
+constexpr int kExitBadInput = 2;
+
+// A progress bar on stderr: percentage, elapsed time and an estimate of the time left.
+class ProgressBar {
+public:
+    explicit ProgressBar(bool enabled) : enabled_(enabled), start_(std::chrono::steady_clock::now()) {}
+
+    void update(double fraction) {
+        if (!enabled_) {
+            return;
+        }
+        const auto now = std::chrono::steady_clock::now();
+        if (fraction < 1.0 && now - last_draw_ < std::chrono::milliseconds(100)) {
+            return;
+        }
+        last_draw_ = now;
+        const double elapsed = std::chrono::duration<double>(now - start_).count();
+        constexpr int kWidth = 30;
+        const int filled = static_cast<int>(fraction * kWidth);
+        std::string bar(static_cast<size_t>(filled), '#');
+        bar.resize(kWidth, '.');
+        char eta[32] = "--";
+        if (fraction > 0.01) {
+            std::snprintf(eta, sizeof(eta), "%.1fs", elapsed * (1 - fraction) / fraction);
+        }
+        std::fprintf(stderr, "\r[%s] %5.1f%%  elapsed %.1fs  ETA %s   ", bar.c_str(), 100 * fraction, elapsed, eta);
+        std::fflush(stderr);
+    }
+    void finish() {
+        if (enabled_) {
+            std::fprintf(stderr, "\r%*s\r", 70, "");
+        }
+    }
+
+private:
+    bool enabled_;
+    std::chrono::steady_clock::time_point start_;
+    std::chrono::steady_clock::time_point last_draw_{};
+};
+
+struct RenderOptions {
+    std::string scene_path;
+    std::string output;
+    std::optional<int> width, height, threads;
+    std::optional<std::uint32_t> spp;
+    std::optional<std::uint64_t> seed;
+    std::optional<std::string> sampler;
+    bool quiet = false;
+};
+
+int bad_input(const std::string& message) {
+    std::cerr << "glint: error: " << message << '\n';
+    return kExitBadInput;
+}
+
+int run_render(const RenderOptions& options) {
+    // Check the output path before spending time on the render.
+    std::filesystem::path output = options.output;
+    if (output.empty()) {
+        output = options.scene_path.empty() ? "default.png"
+                                            : std::filesystem::path(options.scene_path).stem().string() + ".png";
+    }
+    if (!glint::image_format_for(output)) {
+        return bad_input("cannot write '" + output.string() + "': unknown image format (use " +
+                         glint::supported_image_extensions() + ")");
+    }
+    const std::filesystem::path out_dir = output.has_parent_path() ? output.parent_path() : ".";
+    if (!std::filesystem::is_directory(out_dir)) {
+        return bad_input("cannot write '" + output.string() + "': the folder '" + out_dir.string() + "' does not exist");
+    }
+
+    glint::Scene scene;
+    try {
+        const glint::SceneDesc desc =
+            options.scene_path.empty() ? glint::default_scene() : glint::load_scene_file(options.scene_path);
+        glint::RenderOverrides overrides;
+        overrides.width = options.width;
+        overrides.height = options.height;
+        overrides.threads = options.threads;
+        overrides.samples_per_pixel = options.spp;
+        overrides.seed = options.seed;
+        overrides.sampler = options.sampler;
+        scene = glint::build_scene(desc, overrides);
+    } catch (const glint::SceneError& e) {
+        std::cerr << e.what() << '\n';
+        return kExitBadInput;
+    }
+
+    glint::Film film(scene.settings.width, scene.settings.height);
+    ProgressBar bar(!options.quiet && ::isatty(STDERR_FILENO));
+    glint::RenderCallbacks callbacks;
+    callbacks.progress = [&bar](double fraction) { bar.update(fraction); };
+    const glint::RenderStats stats = glint::render(scene, film, callbacks);
+    bar.finish();
+
+    if (stats.nonfinite_samples > 0) {
+        std::fprintf(stderr,
+                     "glint: warning: %llu samples were NaN or infinite and were left out of the image "
+                     "(first at pixel (%d, %d), sample %u)\n",
+                     static_cast<unsigned long long>(stats.nonfinite_samples), stats.first_nonfinite_x,
+                     stats.first_nonfinite_y, stats.first_nonfinite_sample);
+    }
+    try {
+        glint::write_image(film.to_image(), output);
+    } catch (const glint::ImageWriteError& e) {
+        std::cerr << "glint: error: " << e.what() << '\n';
+        return 1;
+    }
+    if (!options.quiet) {
+        std::fprintf(stderr, "glint: %dx%d, %u spp, %.2f s, %.2f M rays, %.2f Mrays/s -> %s\n", scene.settings.width,
+                     scene.settings.height, stats.samples_per_pixel, stats.seconds, stats.rays.total() * 1e-6,
+                     stats.mrays_per_second(), output.string().c_str());
+    }
+    return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"glint: a small, fast, correct ray tracer"};
+    app.set_version_flag("--version", std::string("glint ") + GLINT_VERSION);
+    app.require_subcommand(1);
+
+    RenderOptions options;
+    CLI::App* render = app.add_subcommand("render", "Render a scene file (or the built-in default scene) to an image");
+    render->add_option("scene", options.scene_path, "Scene file (YAML or JSON); omitted: the built-in default scene");
+    render->add_option("-o,--output", options.output,
+                       "Output image: .png (8-bit sRGB), .pfm or .exr (linear float radiance); default: <scene>.png");
+    render->add_option("--width", options.width, "Image width in pixels")->check(CLI::Range(1, 1 << 15));
+    render->add_option("--height", options.height, "Image height in pixels")->check(CLI::Range(1, 1 << 15));
+    render->add_option("--spp", options.spp, "Samples per pixel")->check(CLI::Range(1, 1 << 20));
+    render->add_option("--sampler", options.sampler, "Sample pattern (" + [] {
+        std::string names;
+        for (const auto& n : glint::sampler_names()) {
+            names += (names.empty() ? "" : ", ") + n;
+        }
+        return names;
+    }() + ")");
+    render->add_option("--threads", options.threads, "Worker threads (default: all cores)")->check(CLI::Range(1, 4096));
+    render->add_option("--seed", options.seed, "Random seed: the same seed gives the same image, bit for bit");
+    render->add_flag("-q,--quiet", options.quiet, "No progress bar and no summary");
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForVersion& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        app.exit(e);
+        return kExitBadInput;
+    }
+    if (render->parsed()) {
+        return run_render(options);
+    }
+    return 0;
+}

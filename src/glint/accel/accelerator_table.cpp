@@ -1,0 +1,23 @@
+// The one name → constructor table of accelerators.
+#include "glint/accel/linear.hpp"
+
+namespace glint {
+
+const std::vector<AcceleratorEntry>& accelerator_table() {
+    static const std::vector<AcceleratorEntry> table = {
+        {"list", "every shape tested for every ray (brute force; the reference)",
+         [](std::span<const Shape* const> shapes) { return std::make_unique<LinearAccelerator>(shapes); }},
+    };
+    return table;
+}
+
+std::unique_ptr<Accelerator> make_accelerator(const std::string& name, std::span<const Shape* const> shapes) {
+    for (const AcceleratorEntry& entry : accelerator_table()) {
+        if (entry.name == name) {
+            return entry.create(shapes);
+        }
+    }
+    return nullptr;
+}
+
+}  // namespace glint

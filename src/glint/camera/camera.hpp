@@ -1,0 +1,61 @@
+// Cameras (paper §IV): turn a point on the film (and one on the lens) into a primary ray.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "glint/core/ray.hpp"
+
+namespace glint {
+
+class Params;
+struct BuildContext;
+
+class Camera {
+public:
+    virtual ~Camera() = default;
+    // `film` is in pixels: x right from the left edge, y down from the top edge, pixel (i, j) covering
+    // [i, i+1) × [j, j+1). `lens` is a point of the unit square, for cameras with an aperture.
+    virtual Ray generate_ray(Point2 film, Point2 lens) const = 0;
+};
+
+// The orthonormal viewing basis of paper §IV as corrected in the errata:
+// w = (eye − look_at)/‖eye − look_at‖, u = (up × w)/‖up × w‖, v = w × u.
+struct CameraBasis {
+    Vec3 u, v, w;
+    bool up_was_degenerate = false;  // up ∥ w: another up was chosen (see camera_basis)
+};
+// When up is parallel to w (looking straight along it) the cross product vanishes. The basis then
+// uses up = −z when looking down and +z when looking up (the roll a camera tilted from a level view
+// would have), and +y for other degenerate cases. Never NaN.
+// Precondition: eye ≠ look_at and up ≠ 0.
+CameraBasis camera_basis(const Vec3& eye, const Vec3& look_at, const Vec3& up);
+
+// The image size a camera is built for.
+struct FilmSize {
+    int width = 0;
+    int height = 0;
+};
+
+using CameraFactory = std::function<std::unique_ptr<Camera>(Params&, const BuildContext&, FilmSize)>;
+struct CameraEntry {
+    std::string name;
+    CameraFactory create;
+};
+// The name → constructor table of cameras ("pinhole", …).
+const std::vector<CameraEntry>& camera_table();
+
+// The viewing parameters shared by the perspective cameras: eye, look_at, up, and either the paper's
+// view-plane distance d (in pixels) with zoom, or a vertical field of view. Reads and checks them.
+struct ViewParams {
+    Vec3 eye;
+    Vec3 look_at;
+    CameraBasis basis;
+    double view_distance = 0;  // d, in pixel units
+    double pixel_size = 1;     // 1 / zoom
+};
+ViewParams read_view_params(Params& params, FilmSize film);
+
+}  // namespace glint

@@ -1,0 +1,88 @@
+// Hash-based randomness. Every random number glint uses is a pure function of
+// (seed, pixel, sample index, dimension): no generator state is shared between threads or carried
+// between pixels, so an image is bit-identical whatever the thread count, tile size or crop.
+#pragma once
+
+#include <cstdint>
+
+namespace glint {
+
+// The 64-bit finaliser of SplitMix64 (Steele, Lea & Flood 2014): a bijection with full avalanche.
+constexpr std::uint64_t mix64(std::uint64_t x) {
+    x += 0x9e3779b97f4a7c15ull;
+    x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
+    x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
+    return x ^ (x >> 31);
+}
+
+// Hashes a sequence of integers; each is mixed in turn so that (a, b) and (b, a) differ.
+constexpr std::uint64_t hash_values(std::uint64_t first) { return mix64(first); }
+template <typename... Rest>
+constexpr std::uint64_t hash_values(std::uint64_t first, Rest... rest) {
+    return mix64(first ^ hash_values(static_cast<std::uint64_t>(rest)...) * 0x2545f4914f6cdd1dull);
+}
+
+// The top 53 bits of a hash as a double in [0, 1): exact, never 1.0.
+constexpr double to_unit_double(std::uint64_t bits) { return static_cast<double>(bits >> 11) * 0x1.0p-53; }
+
+// A bijection of [0, length) chosen by `key`: Kensler's hash-based permutation ("Correlated
+// Multi-Jittered Sampling", Pixar 2013), with cycle walking to stay inside the range. Lets a sampler
+// shuffle strata per pixel without storing any table.
+constexpr std::uint32_t permute(std::uint32_t i, std::uint32_t length, std::uint32_t key) {
+    std::uint32_t w = length - 1;
+    w |= w >> 1;
+    w |= w >> 2;
+    w |= w >> 4;
+    w |= w >> 8;
+    w |= w >> 16;
+    do {
+        i ^= key;
+        i *= 0xe170893du;
+        i ^= key >> 16;
+        i ^= (i & w) >> 4;
+        i ^= key >> 8;
+        i *= 0x0929eb3fu;
+        i ^= key >> 23;
+        i ^= (i & w) >> 1;
+        i *= 1u | key >> 27;
+        i *= 0x6935fa69u;
+        i ^= (i & w) >> 11;
+        i *= 0x74dcb303u;
+        i ^= (i & w) >> 2;
+        i *= 0x9e501cc3u;
+        i ^= (i & w) >> 2;
+        i *= 0xc860a3dfu;
+        i &= w;
+        i ^= i >> 5;
+    } while (i >= length);
+    return (i + key) % length;
+}
+
+// Where a random number is used: which pixel, which sample of that pixel. The dimension is the
+// index of the number within the sample's path (film position, lens, light choice, …).
+struct SampleKey {
+    std::uint64_t seed = 0;
+    std::uint32_t pixel_x = 0, pixel_y = 0;
+    std::uint32_t sample = 0;
+
+    std::uint64_t hash(std::uint32_t dimension) const {
+        return hash_values(seed, pixel_x, pixel_y, sample, dimension);
+    }
+    double uniform(std::uint32_t dimension) const { return to_unit_double(hash(dimension)); }
+};
+
+// A stream of uniform numbers for one sample: number k is SampleKey::uniform(first_dimension + k).
+// It holds a counter, but the counter lives on the stack of one sample, so purity is kept.
+class SampleRng {
+public:
+    constexpr SampleRng(const SampleKey& key, std::uint32_t first_dimension)
+        : key_(key), dimension_(first_dimension) {}
+    double uniform() { return key_.uniform(dimension_++); }
+    std::uint32_t dimension() const { return dimension_; }
+
+private:
+    SampleKey key_;
+    std::uint32_t dimension_;
+};
+
+}  // namespace glint

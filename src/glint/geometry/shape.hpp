@@ -1,0 +1,45 @@
+// Shapes (paper §V). A Shape answers where a ray first meets it; the accelerator decides which shapes
+// to ask.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "glint/core/bounds.hpp"
+#include "glint/geometry/hit.hpp"
+
+namespace glint {
+
+class Params;
+struct BuildContext;
+
+class Shape {
+public:
+    virtual ~Shape() = default;
+
+    // World bounds; infinite for unbounded shapes (planes), which accelerators keep aside.
+    virtual Bounds3 bounds() const = 0;
+
+    // The nearest intersection with t in (0, t_max). On a hit, fills `hit` (all but `primitive`) and
+    // returns true; otherwise leaves `hit` untouched.
+    virtual bool intersect(const Ray& ray, double t_max, Hit& hit) const = 0;
+
+    // Whether any intersection has t in (0, t_max): shadow rays need no hit record.
+    virtual bool occluded(const Ray& ray, double t_max) const {
+        Hit unused;
+        return intersect(ray, t_max, unused);
+    }
+};
+
+// The name → constructor table of shapes ("sphere", "plane", …). Each constructor reads its own
+// parameters (Params records them, so unknown keys are caught by the caller).
+using ShapeFactory = std::function<std::unique_ptr<Shape>(Params&, const BuildContext&)>;
+struct ShapeEntry {
+    std::string name;
+    ShapeFactory create;
+};
+const std::vector<ShapeEntry>& shape_table();
+
+}  // namespace glint

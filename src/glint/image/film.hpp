@@ -1,0 +1,41 @@
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "glint/core/color.hpp"
+#include "glint/image/image.hpp"
+
+namespace glint {
+
+// Accumulates radiance samples per pixel (a box filter: each sample counts for the pixel it lies in).
+// Sums are in double, and each pixel is only ever written by the tile that owns it, in sample order,
+// so the result does not depend on threads or tiling.
+class Film {
+public:
+    Film(int width, int height);
+    int width() const { return width_; }
+    int height() const { return height_; }
+
+    void add_sample(int x, int y, const Rgb& radiance) {
+        Pixel& p = pixels_[static_cast<size_t>(y) * width_ + x];
+        p.sum += radiance;
+        p.count += 1;
+    }
+    // The mean of the samples of a pixel (black before any).
+    Rgb pixel(int x, int y) const;
+    std::uint64_t sample_count(int x, int y) const { return pixels_[static_cast<size_t>(y) * width_ + x].count; }
+    void clear();
+    Image to_image() const;
+
+private:
+    struct Pixel {
+        Rgb sum;
+        std::uint64_t count = 0;
+    };
+    int width_;
+    int height_;
+    std::vector<Pixel> pixels_;
+};
+
+}  // namespace glint

@@ -1,0 +1,51 @@
+// Integrators: the radiance arriving along a camera ray.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "glint/core/color.hpp"
+#include "glint/core/ray.hpp"
+#include "glint/sampling/sampler.hpp"
+
+namespace glint {
+
+struct Scene;
+struct RenderSettings;
+
+// Rays traced, by kind; each tile keeps its own and the renderer adds them up.
+struct RayCounters {
+    std::uint64_t camera = 0;
+    std::uint64_t shadow = 0;
+    std::uint64_t secondary = 0;
+    std::uint64_t total() const { return camera + shadow + secondary; }
+    RayCounters& operator+=(const RayCounters& o) {
+        camera += o.camera;
+        shadow += o.shadow;
+        secondary += o.secondary;
+        return *this;
+    }
+};
+
+class Integrator {
+public:
+    virtual ~Integrator() = default;
+    // Radiance arriving at the camera along `ray`. `samples` supplies this path's random numbers.
+    virtual Rgb radiance(const Scene& scene, const Ray& ray, SampleStream& samples, RayCounters& rays) const = 0;
+};
+
+using IntegratorFactory = std::function<std::unique_ptr<Integrator>(const RenderSettings&)>;
+struct IntegratorEntry {
+    std::string name;
+    std::string summary;
+    IntegratorFactory create;
+};
+// The name → constructor table of integrators ("raycast", …).
+const std::vector<IntegratorEntry>& integrator_table();
+std::unique_ptr<Integrator> make_integrator(const std::string& name, const RenderSettings& settings);
+std::vector<std::string> integrator_names();
+
+}  // namespace glint

@@ -1,0 +1,44 @@
+// The parallel render loop: tiles × sample passes on all cores (architecture habit 6).
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <optional>
+
+#include "glint/image/film.hpp"
+#include "glint/integrator/integrator.hpp"
+
+namespace glint {
+
+struct Scene;
+
+struct RenderStats {
+    double seconds = 0;
+    std::uint32_t samples_per_pixel = 0;  // as taken, after the sampler's rounding
+    RayCounters rays;
+    std::uint64_t nonfinite_samples = 0;  // NaN or infinite radiance: counted, left out of the film
+    int first_nonfinite_x = -1, first_nonfinite_y = -1;
+    std::uint32_t first_nonfinite_sample = 0;
+    bool cancelled = false;
+
+    double mrays_per_second() const { return seconds > 0 ? rays.total() / seconds * 1e-6 : 0; }
+};
+
+struct RenderCallbacks {
+    // Called now and then with the fraction done in [0, 1], from one thread at a time.
+    std::function<void(double fraction)> progress;
+    // When set and true, the render stops at the next tile.
+    const std::atomic<bool>* cancel = nullptr;
+};
+
+// Renders scene.settings.samples_per_pixel samples into every pixel of `film` (which must have the
+// settings' size). The result is a pure function of the scene and seed: bit-identical for any thread
+// count or tile size.
+RenderStats render(const Scene& scene, Film& film, const RenderCallbacks& callbacks = {});
+
+// The radiance of one sample: what render() adds to the film for (pixel, sample index).
+Rgb render_sample(const Scene& scene, const Sampler& sampler, const Integrator& integrator, int x, int y,
+                  std::uint32_t sample, RayCounters& rays);
+
+}  // namespace glint

@@ -1,0 +1,11 @@
+// Random sampling (paper §2.2): every point independent and uniform. Aliasing becomes noise, but
+// points clump and leave gaps; the reference every other pattern is measured against.
+#include "glint/sampling/random.hpp"
+
+namespace glint {
+
+Point2 RandomSampler::sample_2d(const SampleKey& key, std::uint32_t dimension) const {
+    return {key.uniform(2 * dimension), key.uniform(2 * dimension + 1)};
+}
+
+}  // namespace glint

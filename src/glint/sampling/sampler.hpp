@@ -1,0 +1,71 @@
+// Sample patterns over the unit square (paper §II–III).
+//
+// A Sampler is immutable and shared by all threads. The n points a pattern places in one pixel are
+// sample indices 0 … n−1 of that pixel; each point is a pure function of
+// (seed, pixel, sample index, dimension), so any sample can be computed alone, in any order.
+// "Dimension" numbers the independent 2-D patterns one camera path consumes: 0 is the position on the
+// film, 1 the position on the lens, 2 and up are used by lights and materials. Each dimension (and each
+// pixel) gets its own scramble, so patterns are not correlated across dimensions or neighbours.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "glint/core/hash.hpp"
+#include "glint/core/vec.hpp"
+
+namespace glint {
+
+class Sampler {
+public:
+    virtual ~Sampler() = default;
+
+    // The number of samples per pixel this pattern takes (a pattern may round the request: jittered
+    // rounds up to a square).
+    virtual std::uint32_t samples_per_pixel() const = 0;
+
+    // Point `key.sample` of the pattern for pixel (key.pixel_x, key.pixel_y) in `dimension`; in [0,1)².
+    virtual Point2 sample_2d(const SampleKey& key, std::uint32_t dimension) const = 0;
+
+    // A 1-D sample; by default the x of the 2-D pattern, which is stratified for every pattern here.
+    virtual double sample_1d(const SampleKey& key, std::uint32_t dimension) const {
+        return sample_2d(key, dimension).x;
+    }
+};
+
+// The samples one camera path draws, in order: a thin cursor over (sampler, key, dimension).
+class SampleStream {
+public:
+    SampleStream(const Sampler& sampler, const SampleKey& key, std::uint32_t first_dimension)
+        : sampler_(&sampler), key_(key), dimension_(first_dimension) {}
+    Point2 next_2d() { return sampler_->sample_2d(key_, dimension_++); }
+    double next_1d() { return sampler_->sample_1d(key_, dimension_++); }
+    const SampleKey& key() const { return key_; }
+
+private:
+    const Sampler* sampler_;
+    SampleKey key_;
+    std::uint32_t dimension_;
+};
+
+// The dimensions the renderer reserves before handing the stream to the integrator.
+inline constexpr std::uint32_t kFilmDimension = 0;
+inline constexpr std::uint32_t kLensDimension = 1;
+inline constexpr std::uint32_t kFirstIntegratorDimension = 2;
+
+// The name → constructor table of sample patterns ("random", "jittered", …).
+using SamplerFactory = std::function<std::unique_ptr<Sampler>(std::uint32_t samples_per_pixel)>;
+struct SamplerEntry {
+    std::string name;
+    std::string summary;
+    SamplerFactory create;
+};
+const std::vector<SamplerEntry>& sampler_table();
+// nullptr when `name` is not in the table.
+std::unique_ptr<Sampler> make_sampler(const std::string& name, std::uint32_t samples_per_pixel);
+std::vector<std::string> sampler_names();
+
+}  // namespace glint

@@ -1,0 +1,78 @@
+#include "glint/scene/diagnostics.hpp"
+
+#include <algorithm>
+#include <sstream>
+
+namespace glint {
+
+std::shared_ptr<const SourceFile> SourceFile::from_text(std::string path, const std::string& text) {
+    auto file = std::make_shared<SourceFile>();
+    file->path = std::move(path);
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);) {
+        if (!line.empty() && line.back() == '\r') {
+            line.pop_back();
+        }
+        file->lines.push_back(std::move(line));
+    }
+    return file;
+}
+
+std::string format_diagnostic(const SourcePos& pos, const std::string& message) {
+    std::ostringstream out;
+    if (pos.file) {
+        out << pos.file->path << ':';
+        if (pos.line > 0) {
+            out << pos.line << ':' << pos.column << ':';
+        }
+        out << ' ';
+    }
+    out << "error: " << message;
+    if (pos.file && pos.line > 0 && pos.line <= static_cast<int>(pos.file->lines.size())) {
+        const std::string& text = pos.file->lines[static_cast<size_t>(pos.line - 1)];
+        out << "\n    " << text << "\n    ";
+        // Keep tabs in the caret line so the caret sits under the right character.
+        for (int i = 0; i + 1 < pos.column && i < static_cast<int>(text.size()); ++i) {
+            out << (text[static_cast<size_t>(i)] == '\t' ? '\t' : ' ');
+        }
+        out << '^';
+    }
+    return out.str();
+}
+
+SceneError::SceneError(const SourcePos& pos, const std::string& message)
+    : std::runtime_error(format_diagnostic(pos, message)), pos_(pos), message_(message) {}
+
+namespace {
+size_t edit_distance(const std::string& a, const std::string& b) {
+    std::vector<size_t> row(b.size() + 1);
+    for (size_t j = 0; j <= b.size(); ++j) {
+        row[j] = j;
+    }
+    for (size_t i = 1; i <= a.size(); ++i) {
+        size_t diagonal = row[0];
+        row[0] = i;
+        for (size_t j = 1; j <= b.size(); ++j) {
+            const size_t substitution = diagonal + (a[i - 1] == b[j - 1] ? 0 : 1);
+            diagonal = row[j];
+            row[j] = std::min({row[j] + 1, row[j - 1] + 1, substitution});
+        }
+    }
+    return row[b.size()];
+}
+}  // namespace
+
+std::string closest_match(const std::string& word, const std::vector<std::string>& candidates) {
+    std::string best;
+    size_t best_distance = std::max<size_t>(2, word.size() / 3) + 1;
+    for (const std::string& candidate : candidates) {
+        const size_t d = edit_distance(word, candidate);
+        if (d < best_distance) {
+            best_distance = d;
+            best = candidate;
+        }
+    }
+    return best;
+}
+
+}  // namespace glint

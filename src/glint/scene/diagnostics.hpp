@@ -1,0 +1,47 @@
+// Positions in scene files and the errors that point at them.
+#pragma once
+
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace glint {
+
+// The text of a scene (or mesh) file, kept so that an error can quote the offending line.
+struct SourceFile {
+    std::string path;
+    std::vector<std::string> lines;
+
+    static std::shared_ptr<const SourceFile> from_text(std::string path, const std::string& text);
+};
+
+// A 1-based line and column in a SourceFile. A default SourcePos means "no position known".
+struct SourcePos {
+    std::shared_ptr<const SourceFile> file;
+    int line = 0;
+    int column = 0;
+};
+
+// A mistake in the user's input. what() is the whole report:
+//   scene.yaml:4:5: error: unknown key 'radious' in sphere; did you mean 'radius'?
+//       radious: 1
+//       ^
+class SceneError : public std::runtime_error {
+public:
+    SceneError(const SourcePos& pos, const std::string& message);
+    const SourcePos& position() const { return pos_; }
+    const std::string& message() const { return message_; }
+
+private:
+    SourcePos pos_;
+    std::string message_;
+};
+
+// The report SceneError carries: position, message, the line and a caret under the column.
+std::string format_diagnostic(const SourcePos& pos, const std::string& message);
+
+// The closest of `candidates` to `word` by edit distance, or "" if none is close enough to suggest.
+std::string closest_match(const std::string& word, const std::vector<std::string>& candidates);
+
+}  // namespace glint

@@ -1,0 +1,45 @@
+// A built scene: what the renderer sees. No YAML, no names to resolve, everything checked.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "glint/accel/accelerator.hpp"
+#include "glint/camera/camera.hpp"
+#include "glint/light/light.hpp"
+#include "glint/material/material.hpp"
+#include "glint/render/settings.hpp"
+
+namespace glint {
+
+struct Scene {
+    RenderSettings settings;
+    std::unique_ptr<Camera> camera;
+    std::vector<std::unique_ptr<Shape>> shapes;
+    std::vector<std::uint32_t> shape_materials;  // material index of shapes[i]
+    std::vector<std::unique_ptr<Material>> materials;
+    std::vector<std::unique_ptr<Light>> lights;
+    std::unique_ptr<Accelerator> accelerator;
+    Rgb background;
+    Rgb ambient;  // the sum of the ambient lights' radiance
+
+    bool intersect(const Ray& ray, double t_max, Hit& hit) const { return accelerator->intersect(ray, t_max, hit); }
+    bool occluded(const Ray& ray, double t_max) const { return accelerator->occluded(ray, t_max); }
+    const Material& material(const Hit& hit) const { return *materials[shape_materials[hit.primitive]]; }
+};
+
+// Settings the command line imposes over the scene file's `render:` block.
+struct RenderOverrides {
+    std::optional<int> width, height, threads, max_depth;
+    std::optional<std::uint32_t> samples_per_pixel;
+    std::optional<std::uint64_t> seed;
+    std::optional<std::string> sampler, integrator, accelerator;
+};
+
+struct SceneDesc;
+// Validates the whole description and builds the scene. Throws SceneError at the first mistake.
+Scene build_scene(const SceneDesc& desc, const RenderOverrides& overrides = {});
+
+}  // namespace glint

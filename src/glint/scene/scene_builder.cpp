@@ -1,0 +1,251 @@
+// SceneDesc → Scene: reads every object through Params and the name → constructor tables, so that
+// each mistake is reported at its position before anything is rendered.
+#include <map>
+
+#include "glint/integrator/integrator.hpp"
+#include "glint/material/matte.hpp"
+#include "glint/sampling/sampler.hpp"
+#include "glint/scene/build_context.hpp"
+#include "glint/scene/params.hpp"
+#include "glint/scene/scene.hpp"
+#include "glint/scene/scene_desc.hpp"
+
+namespace glint {
+
+namespace {
+
+std::string join(const std::vector<std::string>& words) {
+    std::string out;
+    for (const std::string& w : words) {
+        out += (out.empty() ? "" : ", ") + w;
+    }
+    return out;
+}
+
+// Finds `type` in a table, or throws an error that lists the known names.
+template <typename Entry>
+const Entry& lookup(const std::vector<Entry>& table, Params& params, const std::string& concept_name) {
+    const std::string type = params.string("type");
+    std::vector<std::string> names;
+    for (const Entry& entry : table) {
+        if (entry.name == type) {
+            return entry;
+        }
+        names.push_back(entry.name);
+    }
+    std::string message = "unknown " + concept_name + " type '" + type + "'";
+    const std::string guess = closest_match(type, names);
+    if (!guess.empty()) {
+        message += "; did you mean '" + guess + "'?";
+    }
+    params.fail("type", message + " (known: " + join(names) + ")");
+}
+
+// A name checked against a list, for command-line overrides and `render:` keys.
+std::string check_name(const std::string& value, const std::vector<std::string>& names, const std::string& what,
+                       const SourcePos& pos) {
+    for (const std::string& n : names) {
+        if (n == value) {
+            return value;
+        }
+    }
+    std::string message = "unknown " + what + " '" + value + "'";
+    const std::string guess = closest_match(value, names);
+    if (!guess.empty()) {
+        message += "; did you mean '" + guess + "'?";
+    }
+    throw SceneError(pos, message + " (known: " + join(names) + ")");
+}
+
+std::vector<std::string> accelerator_names() {
+    std::vector<std::string> names;
+    for (const auto& e : accelerator_table()) {
+        names.push_back(e.name);
+    }
+    return names;
+}
+
+// An object without a material is grey matte of this albedo.
+constexpr double kDefaultAlbedo = 0.8;
+
+constexpr std::int64_t kMaxImageSide = 1 << 15;
+
+RenderSettings read_render_settings(const Node* node, const RenderOverrides& overrides) {
+    RenderSettings s;
+    SourcePos where;
+    if (node) {
+        Params p(*node, "render");
+        where = p.pos();
+        const auto side = [&](const std::string& key, int fallback) {
+            const std::int64_t v = p.positive_integer(key, fallback);
+            if (v > kMaxImageSide) {
+                p.fail(key, "render." + key + " is larger than " + std::to_string(kMaxImageSide) + " pixels");
+            }
+            return static_cast<int>(v);
+        };
+        s.width = side("width", s.width);
+        s.height = side("height", s.height);
+        const std::int64_t spp = p.positive_integer("samples", s.samples_per_pixel);
+        if (spp > (1 << 20)) {
+            p.fail("samples", "render.samples is more than 1048576 per pixel");
+        }
+        s.samples_per_pixel = static_cast<std::uint32_t>(spp);
+        if (p.has("sampler")) {
+            s.sampler = check_name(p.string("sampler"), sampler_names(), "sampler", p.pos_of("sampler"));
+        }
+        if (p.has("integrator")) {
+            s.integrator = check_name(p.string("integrator"), integrator_names(), "integrator", p.pos_of("integrator"));
+        }
+        if (p.has("accelerator")) {
+            s.accelerator =
+                check_name(p.string("accelerator"), accelerator_names(), "accelerator", p.pos_of("accelerator"));
+        }
+        s.max_depth = static_cast<int>(p.positive_integer("max_depth", s.max_depth));
+        const std::int64_t seed = p.integer("seed", static_cast<std::int64_t>(s.seed));
+        if (seed < 0) {
+            p.fail("seed", "render.seed must be zero or more");
+        }
+        s.seed = static_cast<std::uint64_t>(seed);
+        p.finish();
+    }
+    // Command-line values are checked by the command line; names are checked here, against the tables.
+    if (overrides.width) s.width = *overrides.width;
+    if (overrides.height) s.height = *overrides.height;
+    if (overrides.samples_per_pixel) s.samples_per_pixel = *overrides.samples_per_pixel;
+    if (overrides.seed) s.seed = *overrides.seed;
+    if (overrides.threads) s.threads = *overrides.threads;
+    if (overrides.max_depth) s.max_depth = *overrides.max_depth;
+    const SourcePos command_line{SourceFile::from_text("command line", ""), 0, 0};
+    if (overrides.sampler) s.sampler = check_name(*overrides.sampler, sampler_names(), "sampler", command_line);
+    if (overrides.integrator) {
+        s.integrator = check_name(*overrides.integrator, integrator_names(), "integrator", command_line);
+    }
+    if (overrides.accelerator) {
+        s.accelerator = check_name(*overrides.accelerator, accelerator_names(), "accelerator", command_line);
+    }
+    return s;
+}
+
+}  // namespace
+
+Scene build_scene(const SceneDesc& desc, const RenderOverrides& overrides) {
+    Params top(desc.root, "scene");
+    const BuildContext context{desc.base_dir};
+    Scene scene;
+    scene.settings = read_render_settings(top.node("render"), overrides);
+
+    // Camera: a map with an optional type (pinhole by default).
+    {
+        const Node* camera_node = top.node("camera");
+        Node empty_map;
+        empty_map.kind = Node::Kind::Map;
+        empty_map.pos = top.pos();
+        Params p(camera_node ? *camera_node : empty_map, "camera");
+        const FilmSize film{scene.settings.width, scene.settings.height};
+        if (!p.has("type")) {
+            scene.camera = camera_table().front().create(p, context, film);
+        } else {
+            scene.camera = lookup(camera_table(), p, "camera").create(p, context, film);
+        }
+        p.finish();
+    }
+
+    if (const Node* background = top.node("background")) {
+        scene.background = node_color(*background, "background");
+        if (scene.background.r < 0 || scene.background.g < 0 || scene.background.b < 0) {
+            throw SceneError(background->pos, "background must not be negative");
+        }
+    }
+
+    // Materials: a map from name to {type: …, parameters}.
+    std::map<std::string, std::uint32_t> material_index;
+    const auto build_material = [&](const Node& node, const std::string& what) {
+        Params p(node, what);
+        auto material = lookup(material_table(), p, "material").create(p, context);
+        p.finish();
+        scene.materials.push_back(std::move(material));
+        return static_cast<std::uint32_t>(scene.materials.size() - 1);
+    };
+    if (const Node* materials = top.node("materials")) {
+        if (!materials->is_map()) {
+            throw SceneError(materials->pos, "materials must be a map from names to materials, not " +
+                                                 materials->describe());
+        }
+        for (size_t i = 0; i < materials->keys.size(); ++i) {
+            material_index[materials->keys[i]] = build_material(materials->items[i], "material '" + materials->keys[i] + "'");
+        }
+    }
+    std::optional<std::uint32_t> default_material;  // grey matte, made only if some object needs it
+    const auto material_for = [&](Params& p) -> std::uint32_t {
+        const Node* node = p.node("material");
+        if (!node) {
+            if (!default_material) {
+                default_material = static_cast<std::uint32_t>(scene.materials.size());
+                scene.materials.push_back(std::make_unique<Matte>(Rgb(kDefaultAlbedo)));
+            }
+            return *default_material;
+        }
+        if (node->is_map()) {
+            return build_material(*node, p.what() + ".material");
+        }
+        const std::string name = node_string(*node, p.what() + ".material");
+        const auto found = material_index.find(name);
+        if (found == material_index.end()) {
+            std::vector<std::string> names;
+            for (const auto& [n, index] : material_index) {
+                names.push_back(n);
+            }
+            std::string message = "unknown material '" + name + "'";
+            const std::string guess = closest_match(name, names);
+            if (!guess.empty()) {
+                message += "; did you mean '" + guess + "'?";
+            }
+            throw SceneError(node->pos, message + (names.empty() ? " (the scene defines no materials)"
+                                                                 : " (defined: " + join(names) + ")"));
+        }
+        return found->second;
+    };
+
+    if (const Node* objects = top.node("objects")) {
+        if (!objects->is_sequence()) {
+            throw SceneError(objects->pos, "objects must be a list, not " + objects->describe());
+        }
+        for (size_t i = 0; i < objects->items.size(); ++i) {
+            Params p(objects->items[i], "objects[" + std::to_string(i) + "]");
+            const ShapeEntry& entry = lookup(shape_table(), p, "object");
+            Params shape_params(objects->items[i], entry.name);
+            shape_params.string("type");
+            auto shape = entry.create(shape_params, context);
+            const std::uint32_t material = material_for(shape_params);
+            shape_params.finish();
+            scene.shapes.push_back(std::move(shape));
+            scene.shape_materials.push_back(material);
+        }
+    }
+
+    if (const Node* lights = top.node("lights")) {
+        if (!lights->is_sequence()) {
+            throw SceneError(lights->pos, "lights must be a list, not " + lights->describe());
+        }
+        for (size_t i = 0; i < lights->items.size(); ++i) {
+            Params p(lights->items[i], "lights[" + std::to_string(i) + "]");
+            const LightEntry& entry = lookup(light_table(), p, "light");
+            Params light_params(lights->items[i], entry.name + " light");
+            light_params.string("type");
+            auto light = entry.create(light_params, context);
+            light_params.finish();
+            scene.ambient += light->ambient();
+            scene.lights.push_back(std::move(light));
+        }
+    }
+    top.finish();
+
+    std::vector<const Shape*> shapes;
+    for (const auto& s : scene.shapes) {
+        shapes.push_back(s.get());
+    }
+    scene.accelerator = make_accelerator(scene.settings.accelerator, shapes);
+    return scene;
+}
+
+}  // namespace glint
