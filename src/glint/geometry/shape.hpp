@@ -4,6 +4,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,13 @@ namespace glint {
 
 class Params;
 struct BuildContext;
+
+// A point chosen on a shape's surface, for lights with area.
+struct ShapeSample {
+    Vec3 point;
+    Vec3 normal;        // unit, outward
+    double pdf_area = 0;  // density per unit area
+};
 
 class Shape {
 public:
@@ -31,6 +39,11 @@ public:
         Hit unused;
         return intersect(ray, t_max, unused);
     }
+
+    // Surface area, and a point uniformly distributed over it: what an area light needs of its shape.
+    // Shapes that cannot be lights (unbounded ones) keep the defaults.
+    virtual double area() const { return 0; }
+    virtual std::optional<ShapeSample> sample_area(Point2 /*u*/) const { return std::nullopt; }
 };
 
 // The name → constructor table of shapes ("sphere", "plane", …). Each constructor reads its own

@@ -71,6 +71,15 @@ bool Sphere::occluded(const Ray& ray, double t_max) const {
     return (t0 > 0 && t0 < t_max) || (t1 > 0 && t1 < t_max);
 }
 
+std::optional<ShapeSample> Sphere::sample_area(Point2 u) const {
+    // Uniform on the sphere: z uniform in [−1, 1] (Archimedes' hat-box theorem), φ uniform.
+    const double z = 1 - 2 * u.x;
+    const double r = safe_sqrt(1 - z * z);
+    const double phi = 2 * kPi * u.y;
+    const Vec3 n{r * std::cos(phi), r * std::sin(phi), z};
+    return ShapeSample{center_ + radius_ * n, n, 1 / area()};
+}
+
 std::unique_ptr<Shape> Sphere::create(Params& params, const BuildContext&) {
     const Vec3 center = params.vec3("center", {0, 0, 0});
     const double radius = params.positive("radius");

@@ -10,6 +10,10 @@ public:
     Bounds3 bounds() const override;
     bool intersect(const Ray& ray, double t_max, Hit& hit) const override;
     bool occluded(const Ray& ray, double t_max) const override;
+    double area() const override { return 4 * kPi * radius_ * radius_; }
+    std::optional<ShapeSample> sample_area(Point2 u) const override;
+    const Vec3& center() const { return center_; }
+    double radius() const { return radius_; }
 
     static std::unique_ptr<Shape> create(Params& params, const BuildContext& context);
 
