@@ -1,5 +1,8 @@
 // The one name → constructor table of integrators. Adding one: a file here and a line below.
+#include "glint/integrator/path.hpp"
 #include "glint/integrator/raycast.hpp"
+#include "glint/integrator/whitted.hpp"
+#include "glint/render/settings.hpp"
 
 namespace glint {
 
@@ -7,6 +10,10 @@ const std::vector<IntegratorEntry>& integrator_table() {
     static const std::vector<IntegratorEntry> table = {
         {"raycast", "direct light from every light with hard shadows; no reflection",
          [](const RenderSettings&) { return std::make_unique<RaycastIntegrator>(); }},
+        {"whitted", "Whitted: direct light and shadows plus recursive mirror reflection and refraction",
+         [](const RenderSettings& s) { return std::make_unique<WhittedIntegrator>(s.max_depth); }},
+        {"path", "path tracing with next-event estimation and multiple importance sampling",
+         [](const RenderSettings& s) { return std::make_unique<PathIntegrator>(s.max_depth); }},
     };
     return table;
 }

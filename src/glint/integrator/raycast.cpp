@@ -10,7 +10,7 @@ Rgb RaycastIntegrator::radiance(const Scene& scene, const Ray& ray, SampleStream
     ++rays.camera;
     Hit hit;
     if (!scene.intersect(ray, kInf, hit)) {
-        return scene.background;
+        return scene.escaped(ray.direction);
     }
     const Material& material = scene.material(hit);
     const Vec3 wo = normalize(-ray.direction);

@@ -21,13 +21,13 @@ struct BuildContext;
 
 struct BsdfSample {
     Vec3 wi;
-    Rgb f;             // BSDF value for (wo, wi)
-    double pdf = 0;    // solid-angle density of wi; for a delta lobe, the discrete probability
+    Rgb f;               // BSDF value for (wo, wi)
+    double pdf = 0;      // solid-angle density of wi; for a delta lobe, the discrete probability
     bool delta = false;  // a mirror or refraction direction: f and pdf are Dirac weights
 };
 
 class Material {
-public:
+  public:
     virtual ~Material() = default;
 
     virtual Rgb evaluate(const Hit& hit, const Vec3& wo, const Vec3& wi) const = 0;
@@ -39,6 +39,10 @@ public:
     virtual Rgb ambient_reflectance(const Hit&) const { return {}; }
     // Radiance the surface emits towards wo.
     virtual Rgb emitted(const Hit&, const Vec3&) const { return {}; }
+    // Absorption coefficient σ_a (per unit length, per channel) of the medium this closed surface
+    // encloses: light travelling a distance d inside keeps exp(−σ_a d) of itself (Beer's law). The
+    // integrators apply it along rays that refract into the object.
+    virtual Rgb absorption(const Hit&) const { return {}; }
 };
 
 // The name → constructor table of materials ("matte", …).
@@ -50,6 +54,8 @@ struct MaterialEntry {
 const std::vector<MaterialEntry>& material_table();
 
 // n flipped, if needed, to the side of v.
-inline Vec3 face_forward(const Vec3& n, const Vec3& v) { return dot(n, v) < 0 ? -n : n; }
+inline Vec3 face_forward(const Vec3& n, const Vec3& v) {
+    return dot(n, v) < 0 ? -n : n;
+}
 
 }  // namespace glint

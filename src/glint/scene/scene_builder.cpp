@@ -3,6 +3,7 @@
 #include <map>
 
 #include "glint/integrator/integrator.hpp"
+#include "glint/light/area.hpp"
 #include "glint/material/matte.hpp"
 #include "glint/sampling/sampler.hpp"
 #include "glint/scene/build_context.hpp"
@@ -42,8 +43,8 @@ const Entry& lookup(const std::vector<Entry>& table, Params& params, const std::
 }
 
 // A name checked against a list, for command-line overrides and `render:` keys.
-std::string check_name(const std::string& value, const std::vector<std::string>& names, const std::string& what,
-                       const SourcePos& pos) {
+std::string check_name(const std::string& value, const std::vector<std::string>& names,
+                       const std::string& what, const SourcePos& pos) {
     for (const std::string& n : names) {
         if (n == value) {
             return value;
@@ -94,11 +95,12 @@ RenderSettings read_render_settings(const Node* node, const RenderOverrides& ove
             s.sampler = check_name(p.string("sampler"), sampler_names(), "sampler", p.pos_of("sampler"));
         }
         if (p.has("integrator")) {
-            s.integrator = check_name(p.string("integrator"), integrator_names(), "integrator", p.pos_of("integrator"));
+            s.integrator =
+                check_name(p.string("integrator"), integrator_names(), "integrator", p.pos_of("integrator"));
         }
         if (p.has("accelerator")) {
-            s.accelerator =
-                check_name(p.string("accelerator"), accelerator_names(), "accelerator", p.pos_of("accelerator"));
+            s.accelerator = check_name(p.string("accelerator"), accelerator_names(), "accelerator",
+                                       p.pos_of("accelerator"));
         }
         s.max_depth = static_cast<int>(p.positive_integer("max_depth", s.max_depth));
         const std::int64_t seed = p.integer("seed", static_cast<std::int64_t>(s.seed));
@@ -109,14 +111,21 @@ RenderSettings read_render_settings(const Node* node, const RenderOverrides& ove
         p.finish();
     }
     // Command-line values are checked by the command line; names are checked here, against the tables.
-    if (overrides.width) s.width = *overrides.width;
-    if (overrides.height) s.height = *overrides.height;
-    if (overrides.samples_per_pixel) s.samples_per_pixel = *overrides.samples_per_pixel;
-    if (overrides.seed) s.seed = *overrides.seed;
-    if (overrides.threads) s.threads = *overrides.threads;
-    if (overrides.max_depth) s.max_depth = *overrides.max_depth;
+    if (overrides.width)
+        s.width = *overrides.width;
+    if (overrides.height)
+        s.height = *overrides.height;
+    if (overrides.samples_per_pixel)
+        s.samples_per_pixel = *overrides.samples_per_pixel;
+    if (overrides.seed)
+        s.seed = *overrides.seed;
+    if (overrides.threads)
+        s.threads = *overrides.threads;
+    if (overrides.max_depth)
+        s.max_depth = *overrides.max_depth;
     const SourcePos command_line{SourceFile::from_text("command line", ""), 0, 0};
-    if (overrides.sampler) s.sampler = check_name(*overrides.sampler, sampler_names(), "sampler", command_line);
+    if (overrides.sampler)
+        s.sampler = check_name(*overrides.sampler, sampler_names(), "sampler", command_line);
     if (overrides.integrator) {
         s.integrator = check_name(*overrides.integrator, integrator_names(), "integrator", command_line);
     }
@@ -130,7 +139,7 @@ RenderSettings read_render_settings(const Node* node, const RenderOverrides& ove
 
 Scene build_scene(const SceneDesc& desc, const RenderOverrides& overrides) {
     Params top(desc.root, "scene");
-    const BuildContext context{desc.base_dir};
+    BuildContext context{desc.base_dir, {}};
     Scene scene;
     scene.settings = read_render_settings(top.node("render"), overrides);
 
@@ -168,11 +177,12 @@ Scene build_scene(const SceneDesc& desc, const RenderOverrides& overrides) {
     };
     if (const Node* materials = top.node("materials")) {
         if (!materials->is_map()) {
-            throw SceneError(materials->pos, "materials must be a map from names to materials, not " +
-                                                 materials->describe());
+            throw SceneError(materials->pos,
+                             "materials must be a map from names to materials, not " + materials->describe());
         }
         for (size_t i = 0; i < materials->keys.size(); ++i) {
-            material_index[materials->keys[i]] = build_material(materials->items[i], "material '" + materials->keys[i] + "'");
+            material_index[materials->keys[i]] =
+                build_material(materials->items[i], "material '" + materials->keys[i] + "'");
         }
     }
     std::optional<std::uint32_t> default_material;  // grey matte, made only if some object needs it
@@ -220,8 +230,35 @@ Scene build_scene(const SceneDesc& desc, const RenderOverrides& overrides) {
             shape_params.finish();
             scene.shapes.push_back(std::move(shape));
             scene.shape_materials.push_back(material);
+            scene.shape_lights.push_back(-1);
+            // An object whose material emits is an area light, so that light sampling finds it.
+            if (emits_light(*scene.materials[material])) {
+                if (!(scene.shapes.back()->area() > 0)) {
+                    throw SceneError(p.pos(), "objects[" + std::to_string(i) +
+                                                  "] emits light but its shape has no "
+                                                  "finite area (" +
+                                                  entry.name + "): it cannot be an area light");
+                }
+                scene.shape_lights.back() = static_cast<std::int32_t>(scene.lights.size());
+                scene.lights.push_back(
+                    std::make_unique<AreaLight>(*scene.shapes.back(), *scene.materials[material], 1));
+            }
         }
     }
+
+    // {type: area} lights add their shape to the objects, with the light's emitting material.
+    std::int32_t next_light_index = -1;
+    context.add_object = [&](Params& shape_params, std::unique_ptr<Material> material) {
+        const ShapeEntry& entry = lookup(shape_table(), shape_params, "shape");
+        auto shape = entry.create(shape_params, context);
+        shape_params.finish();
+        scene.shapes.push_back(std::move(shape));
+        scene.materials.push_back(std::move(material));
+        scene.shape_materials.push_back(static_cast<std::uint32_t>(scene.materials.size() - 1));
+        scene.shape_lights.push_back(next_light_index);
+        return std::pair<const Shape*, const Material*>{scene.shapes.back().get(),
+                                                        scene.materials.back().get()};
+    };
 
     if (const Node* lights = top.node("lights")) {
         if (!lights->is_sequence()) {
@@ -232,9 +269,21 @@ Scene build_scene(const SceneDesc& desc, const RenderOverrides& overrides) {
             const LightEntry& entry = lookup(light_table(), p, "light");
             Params light_params(lights->items[i], entry.name + " light");
             light_params.string("type");
+            next_light_index = static_cast<std::int32_t>(scene.lights.size());
             auto light = entry.create(light_params, context);
             light_params.finish();
             scene.ambient += light->ambient();
+            if (light->is_environment()) {
+                if (scene.environment) {
+                    light_params.fail("type", "a scene has at most one environment light");
+                }
+                if (top.node("background")) {
+                    light_params.fail("type",
+                                      "an environment light supplies the background: remove the scene's "
+                                      "`background`");
+                }
+                scene.environment = light.get();
+            }
             scene.lights.push_back(std::move(light));
         }
     }

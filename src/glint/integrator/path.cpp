@@ -1,0 +1,102 @@
+#include "glint/integrator/path.hpp"
+
+#include "glint/integrator/direct_lighting.hpp"
+#include "glint/integrator/whitted.hpp"
+#include "glint/scene/scene.hpp"
+
+namespace glint {
+
+namespace {
+constexpr int kRouletteStart = 3;      // bounces before Russian roulette may end a path
+constexpr double kMaxSurvival = 0.95;  // never certain survival: ends paths trapped between mirrors
+}  // namespace
+
+Rgb PathIntegrator::radiance(const Scene& scene, const Ray& camera_ray, SampleStream& samples,
+                             RayCounters& rays) const {
+    ++rays.camera;
+    Rgb radiance;
+    Rgb throughput(1.0);
+    Rgb absorption;  // σ_a of the medium the ray is in
+    Ray ray = camera_ray;
+    bool specular = true;  // the last bounce was a delta lobe (or the camera): emission counts in full
+    double bsdf_pdf = 0;   // solid-angle density of the last BSDF sample
+    Hit previous;          // the last vertex, facing the way the path came
+
+    for (int bounce = 0;; ++bounce) {
+        Hit hit;
+        if (!scene.intersect(ray, kInf, hit)) {
+            const Vec3 dir = normalize(ray.direction);
+            const Rgb sky = scene.escaped(dir);
+            if (specular || !scene.environment) {
+                radiance += throughput * sky;
+            } else {
+                radiance += throughput * sky *
+                            power_heuristic(bsdf_pdf, scene.environment->pdf(previous, dir, nullptr));
+            }
+            break;
+        }
+        throughput *= beer_transmittance(absorption, hit.t * length(ray.direction));
+        const Material& material = scene.material(hit);
+        const Vec3 wo = normalize(-ray.direction);
+
+        const Rgb emitted = material.emitted(hit, wo);
+        if (!emitted.is_black()) {
+            const Light* light = scene.light_of(hit);
+            if (specular || !light) {
+                radiance += throughput * emitted;
+            } else {
+                const double light_pdf = light->pdf(previous, -wo, &hit);
+                radiance += throughput * emitted * power_heuristic(bsdf_pdf, light_pdf);
+            }
+        }
+        if (bounce >= max_depth_) {
+            break;
+        }
+
+        // Next-event estimation: one sample of each light.
+        const Hit at = facing(hit, wo);
+        for (const auto& light : scene.lights) {
+            if (!light->physical()) {
+                continue;
+            }
+            const Point2 u = samples.next_2d();
+            const std::optional<LightSample> ls = light->sample(at, u);
+            if (!ls || ls->radiance.is_black() || ls->pdf <= 0) {
+                continue;
+            }
+            const Rgb f = material.evaluate(hit, wo, ls->wi);
+            const double cos_theta = std::abs(dot(at.shading_normal, ls->wi));
+            if (f.is_black() || cos_theta == 0) {
+                continue;
+            }
+            const double weight = ls->delta ? 1.0 : power_heuristic(ls->pdf, material.pdf(hit, wo, ls->wi));
+            if (weight > 0 && !shadowed(scene, at, *ls, rays)) {
+                radiance += throughput * f * ls->radiance * (cos_theta * weight / ls->pdf);
+            }
+        }
+
+        // Continue the path by sampling the BSDF.
+        const std::optional<BsdfSample> s = material.sample(hit, wo, samples.next_2d());
+        if (!s || s->pdf <= 0 || s->f.is_black()) {
+            break;
+        }
+        throughput *= s->f * (std::abs(dot(hit.shading_normal, s->wi)) / s->pdf);
+        specular = s->delta;
+        bsdf_pdf = s->pdf;
+        absorption = medium_after(material, hit, wo, s->wi, absorption);
+        previous = at;
+
+        if (bounce + 1 >= kRouletteStart) {
+            const double survival = std::min(kMaxSurvival, throughput.max_component());
+            if (samples.next_1d() >= survival) {
+                break;
+            }
+            throughput = throughput / survival;
+        }
+        ++rays.secondary;
+        ray = spawn_ray(hit, s->wi);
+    }
+    return radiance;
+}
+
+}  // namespace glint
