@@ -1,13 +1,15 @@
 // The one name → constructor table of shapes. Adding a shape: a file in this folder and a line here.
+#include "glint/geometry/disk.hpp"
 #include "glint/geometry/plane.hpp"
+#include "glint/geometry/rectangle.hpp"
 #include "glint/geometry/sphere.hpp"
 
 namespace glint {
 
 const std::vector<ShapeEntry>& shape_table() {
     static const std::vector<ShapeEntry> table = {
-        {"sphere", &Sphere::create},
-        {"plane", &Plane::create},
+        {"sphere", &Sphere::create},        {"plane", &Plane::create},         {"disk", &Disk::create},
+        {"annulus", &Disk::create_annulus}, {"rectangle", &Rectangle::create},
     };
     return table;
 }
