@@ -129,6 +129,40 @@ inline void check_scale_independence(const std::function<std::unique_ptr<Shape>(
     }
 }
 
+// Random rays, from around the shape and from points inside its bounds, towards points of its bounds:
+// every hit lies on the surface (|surface_distance| ≤ 1e-9 · size), has the unit normal
+// expected_normal(point) gives, and occluded() agrees with intersect(). Returns the number of hits.
+inline int check_random_hits(const Shape& shape, const std::function<double(const Vec3&)>& surface_distance,
+                             const std::function<Vec3(const Vec3&)>& expected_normal, int rays = 500) {
+    const Bounds3 box = shape.bounds();
+    const double size = max_component(box.extent());
+    int hits = 0;
+    for (std::uint32_t i = 0; i < static_cast<std::uint32_t>(rays); ++i) {
+        const Vec3 origin =
+            i % 2 ? box.center() + 2 * size * random_direction(21, i) : random_point_in(box, 22, i);
+        const Vec3 target = random_point_in(box, 23, i);
+        const Ray ray{origin, target - origin};
+        Hit hit;
+        const bool found = shape.intersect(ray, kInf, hit);
+        EXPECT_EQ(shape.occluded(ray, kInf), found) << "ray " << i;
+        if (!found) {
+            continue;
+        }
+        ++hits;
+        EXPECT_GT(hit.t, 0);
+        EXPECT_NEAR(surface_distance(hit.point), 0, 1e-9 * size) << "ray " << i << " hits " << hit.point;
+        EXPECT_NEAR(distance(hit.point, ray.at(hit.t)), 0, 1e-9 * size) << "ray " << i;
+        EXPECT_NEAR(length(hit.normal), 1, 1e-12);
+        EXPECT_NEAR(distance(hit.normal, expected_normal(hit.point)), 0, 1e-7)
+            << "ray " << i << " hits " << hit.point << " with normal " << hit.normal;
+        EXPECT_EQ(hit.shading_normal, hit.normal);
+        EXPECT_TRUE(hit.uv.x >= 0 && hit.uv.x <= 1 && hit.uv.y >= 0 && hit.uv.y <= 1)
+            << "uv " << hit.uv.x << ", " << hit.uv.y;
+    }
+    EXPECT_GT(hits, rays / 10) << "too few rays hit the shape for the test to mean anything";
+    return hits;
+}
+
 // Builds a scene from text and returns the error it raises ("" when it builds).
 std::string scene_error(const std::string& yaml);
 

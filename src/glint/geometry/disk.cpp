@@ -16,11 +16,7 @@ Disk::Disk(const Vec3& center, const Vec3& normal, double radius, double inner_r
       inner_radius_(inner_radius) {}
 
 Bounds3 Disk::bounds() const {
-    // Per axis the disk reaches radius · sin(angle between the axis and the normal) = r·√(1 − n_i²).
-    const Vec3& n = frame_.n;
-    const Vec3 half{radius_ * safe_sqrt(1 - n.x * n.x), radius_ * safe_sqrt(1 - n.y * n.y),
-                    radius_ * safe_sqrt(1 - n.z * n.z)};
-    return {center_ - half, center_ + half};
+    return disk_bounds(center_, frame_.n, radius_);
 }
 
 double Disk::solve(const Ray& ray, double t_max, Vec3& point) const {

@@ -2,6 +2,7 @@
 // meets their plane, and the hit point put back exactly onto that plane.
 #pragma once
 
+#include "glint/core/bounds.hpp"
 #include "glint/core/ray.hpp"
 
 namespace glint {
@@ -20,6 +21,14 @@ inline double plane_hit_t(const Ray& ray, const Vec3& point, const Vec3& normal)
 inline Vec3 point_on_plane(const Ray& ray, double t, const Vec3& point, const Vec3& normal) {
     const Vec3 p = ray.at(t);
     return p - normal * dot(p - point, normal);
+}
+
+// Bounds of the disk of `radius` around `center` in the plane of the unit `normal`: along axis i the
+// disk reaches radius · sin(angle between axis i and the normal) = radius · √(1 − n_i²).
+inline Bounds3 disk_bounds(const Vec3& center, const Vec3& normal, double radius) {
+    const Vec3 half{radius * safe_sqrt(1 - normal.x * normal.x), radius * safe_sqrt(1 - normal.y * normal.y),
+                    radius * safe_sqrt(1 - normal.z * normal.z)};
+    return {center - half, center + half};
 }
 
 }  // namespace glint
