@@ -60,6 +60,10 @@ TEST(Cone, HitsTheSideAndCapWithOutwardNormals) {
     EXPECT_FALSE(cone.intersect({{-5, -0.5, 0}, {1, 0, 0}}, kInf, hit));  // below the base
     EXPECT_FALSE(cone.intersect({{-5, 1, 0}, {1, 0, 0}}, 4.5, hit));      // t_max
     EXPECT_FALSE(cone.intersect({{-5, 1, 0}, {-1, 0, 0}}, kInf, hit));    // behind
+    // Grazing: up along the outside of the rim, and along a side line just outside the cone.
+    EXPECT_FALSE(cone.intersect({{1.000001, -1, 0}, {0, 1, 0}}, kInf, hit));
+    EXPECT_FALSE(cone.intersect({{-1.000001, 0, 0}, {1, 2, 0}}, kInf, hit));
+    EXPECT_FALSE(cone.occluded({{-1.000001, 0, 0}, {1, 2, 0}}, kInf));
     // The open cone: the ray up the axis from below passes its open base and meets the inside of
     // the apex region; the point is the apex.
     const Cone open({0, 0, 0}, {0, 2, 0}, 1, false);

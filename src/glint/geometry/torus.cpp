@@ -78,8 +78,9 @@ bool Torus::intersect(const Ray& ray, double t_max, Hit& hit) const {
         return false;
     }
     // Project onto the torus: the nearest point of the core circle, then out along the tube's radius.
-    const double rho = std::hypot(p.x, p.y);  // > 0: the tube does not reach the axis when r < R
-    const Vec3 radial{p.x / rho, p.y / rho, 0};
+    // rho > 0: the tube does not reach the axis when r < R (the guard is against a NaN, not a case).
+    const double rho = std::hypot(p.x, p.y);
+    const Vec3 radial = rho > 0 ? Vec3{p.x / rho, p.y / rho, 0} : Vec3{1, 0, 0};
     const Vec3 ring = unit_major_ * radial;
     const Vec3 n = normalize(p - ring);
     const Vec3 on_surface = ring + unit_minor_ * n;
