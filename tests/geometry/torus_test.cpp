@@ -26,6 +26,14 @@ TEST(Polynomial, FindsEveryRealRootInTheInterval) {
     // x⁴ + 1 has no real root; (x² − 2)² touches zero without crossing: not reported.
     const double none[5] = {1, 0, 0, 0, 1};
     EXPECT_EQ(polynomial_roots(none, 4, -10, 10, roots), 0);
+    // Quadratics in closed form: (x − 3)(x + 0.5), and (x − 2)², whose double root is reported once.
+    const double quadratic[3] = {-1.5, -2.5, 1};
+    ASSERT_EQ(polynomial_roots(quadratic, 2, -10, 10, roots), 2);
+    EXPECT_NEAR(roots[0], -0.5, 1e-15);
+    EXPECT_NEAR(roots[1], 3, 1e-15);
+    const double square[3] = {4, -4, 1};
+    ASSERT_EQ(polynomial_roots(square, 2, -10, 10, roots), 1);
+    EXPECT_EQ(roots[0], 2);
     // Two roots 1e-6 apart, where closed-form quartic solvers lose digits: (x−1)(x−1−1e-6)(x+2)(x−5).
     const double e = 1e-6;
     // Build it by multiplying out, to keep the test free of hand algebra.

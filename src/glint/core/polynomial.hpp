@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace glint {
 
@@ -52,8 +53,9 @@ inline double bracketed_root(const double* c, const double* dc, int n, double a,
 }  // namespace detail
 
 // The real roots of p(x) = c[0] + … + c[n] xⁿ (n ≤ 4, c[n] ≠ 0) in [lo, hi], ascending, written to
-// `roots` (room for n). Roots of even multiplicity (the polynomial touches zero without crossing it)
-// are not reported: for ray tracing they are grazing hits of measure zero.
+// `roots` (room for n). For n ≥ 3, roots of even multiplicity (the polynomial touches zero without
+// crossing it) are not reported: for ray tracing they are grazing hits of measure zero. Quadratics
+// are solved in closed form (a double root is reported once).
 inline int polynomial_roots(const double* c, int n, double lo, double hi, double* roots) {
     if (n == 1) {
         const double x = -c[0] / c[1];
@@ -63,11 +65,31 @@ inline int polynomial_roots(const double* c, int n, double lo, double hi, double
         }
         return 0;
     }
-    double derivative[4];
+    if (n == 2) {
+        // Closed form, without cancellation (q never subtracts): only the cubic's critical points come
+        // from here, and they need not be exact, only to split the cubic into monotonic pieces.
+        const double discriminant = c[1] * c[1] - 4 * c[2] * c[0];
+        if (discriminant < 0) {
+            return 0;
+        }
+        const double q = -0.5 * (c[1] + std::copysign(std::sqrt(discriminant), c[1]));
+        double r0 = q / c[2], r1 = q != 0 ? c[0] / q : r0;
+        if (r0 > r1) {
+            std::swap(r0, r1);
+        }
+        int count = 0;
+        for (const double r : {r0, r1}) {
+            if (r >= lo && r <= hi && (count == 0 || r != roots[0])) {
+                roots[count++] = r;
+            }
+        }
+        return count;
+    }
+    double derivative[4] = {};
     for (int i = 1; i <= n; ++i) {
         derivative[i - 1] = i * c[i];
     }
-    double breaks[5];
+    double breaks[5] = {};
     const int critical = polynomial_roots(derivative, n - 1, lo, hi, breaks);
     breaks[critical] = hi;
     int count = 0;
