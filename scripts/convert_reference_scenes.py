@@ -1,0 +1,139 @@
+#!/usr/bin/env python3
+"""Converts the scene data of two reference renderers into glint scenes, exactly.
+
+  python3 scripts/convert_reference_scenes.py [--shared ../shared] [--out examples]
+
+reads   <shared>/data/scenes/rtiow-book1-final.json   (Ray Tracing in One Weekend, book 1, final scene)
+        <shared>/data/scenes/smallpt.json             (Kevin Beason's smallpt)
+writes  <out>/rtiow-final.yaml and <out>/smallpt.yaml
+
+Every number is copied at full precision (repr of the float); what cannot be the same is said in the
+header comment each file gets. The glint names used for the reference materials are in MATERIALS.
+"""
+import argparse
+import json
+import math
+import os
+
+
+def num(x):
+    """A number as YAML: integers without a fraction, floats at full precision."""
+    x = float(x)
+    return str(int(x)) if x.is_integer() and abs(x) < 1e15 else repr(x)
+
+
+def vec(v):
+    return "[" + ", ".join(num(c) for c in v) + "]"
+
+
+# The reference materials as glint materials (docs/scene-format.md, "materials").
+MATERIALS = {
+    "lambertian": lambda m: f"{{type: matte, albedo: {vec(m['albedo'])}}}",
+    "metal": lambda m: f"{{type: metal, albedo: {vec(m['albedo'])}, fuzz: {num(m['fuzz'])}}}",
+    "dielectric": lambda m: f"{{type: dielectric, ior: {num(m['ir'])}}}",
+}
+
+
+def convert_rtiow(data):
+    cam = data["camera"]
+    width, height = cam["image_width"], cam["image_height"]
+    # RTIOW's defocus disk radius is focus_dist · tan(defocus_angle / 2).
+    lens_radius = cam["focus_dist"] * math.tan(math.radians(cam["defocus_angle"] / 2))
+    out = [
+        "# The final scene of Ray Tracing in One Weekend (book 1), converted exactly by",
+        "# scripts/convert_reference_scenes.py from ../shared/data/scenes/rtiow-book1-final.json (the spheres",
+        "# its reference code generates with glibc rand() unseeded).",
+        "# Camera: vfov 20°, thin lens of radius focus_dist · tan(defocus_angle / 2) focused at 10. Light: the",
+        "# book's sky, white at the nadir to (0.5, 0.7, 1) at the zenith, lerped by 0.5 (dir.y + 1), as an",
+        "# environment light (so it also lights the scene, as in the book). Materials: lambertian → matte,",
+        "# metal (fuzz) → metal, dielectric → dielectric (the book uses Schlick's Fresnel approximation).",
+        "# The book's integrator is a path tracer without light sampling; glint's path tracer with next-event",
+        "# estimation and MIS converges to the same image.",
+        "# Full quality (the book's settings):",
+        f"#   glint render examples/rtiow-final.yaml --width {width} --height {height} --spp {cam['samples_per_pixel']}"
+        f" --max-depth {cam['max_depth']} -o rtiow-final.png",
+        f"render: {{width: 200, height: 113, samples: 4, integrator: path, max_depth: {cam['max_depth']}}}",
+        f"camera: {{type: thin-lens, eye: {vec(cam['lookfrom'])}, look_at: {vec(cam['lookat'])}, up: {vec(cam['vup'])},"
+        f" fov: {num(cam['vfov'])}, lens_radius: {num(lens_radius)}, focus_distance: {num(cam['focus_dist'])}}}",
+        "lights:",
+        "  - {type: environment, radiance: {type: gradient, bottom: [1, 1, 1], top: [0.5, 0.7, 1.0]}}",
+        "objects:",
+    ]
+    for s in data["spheres"]:
+        m = s["material"]
+        out.append(f"  - {{type: sphere, center: {vec(s['center'])}, radius: {num(s['radius'])},"
+                   f" material: {MATERIALS[m['type']](m)}}}")
+    return "\n".join(out) + "\n"
+
+
+def convert_smallpt(data):
+    cam = data["camera"]
+    width, height = cam["image_width"], cam["image_height"]
+    d = cam["direction_unnormalized"]
+    d_len = math.sqrt(sum(c * c for c in d))
+    # cy has length .5135 and the image spans cy · [−0.5, 0.5] at distance |cam.d| along the view.
+    fov = 2 * math.degrees(math.atan(0.5135 / 2 / d_len))
+    look_at = [cam["origin"][i] + d[i] / d_len * 100 for i in range(3)]
+    out = [
+        "# smallpt's scene (Kevin Beason, 2008), converted exactly by scripts/convert_reference_scenes.py from",
+        "# ../shared/data/scenes/smallpt.json: nine spheres, the walls being spheres of radius 1e5.",
+        "# Camera: smallpt starts each primary ray 140 units along its direction from cam.o (a near plane)",
+        "# and so never sees the front wall 'Frnt', which lies between; glint's pinhole at cam.o has no near",
+        "# plane, so Frnt is left out. That changes no radiance: Frnt is black (albedo 0, no emission), and",
+        "# a ray leaving through its place sees the black background instead.",
+        f"# fov = 2 atan(0.5135 / 2 / |cam.d|) = {fov:.4f}°; pixels are square (cx = w · .5135 / h).",
+        "# Materials: DIFF → matte, SPEC → mirror, REFR → dielectric of index 1.5 (smallpt uses Schlick's",
+        "# approximation and its own reflect/refract probabilities; both estimate the same light), and the",
+        "# light 'Lite' (emission 12, colour 0) → an area light on its sphere, which the ceiling mostly covers.",
+        "# Not reproduced: smallpt's 2×2 sub-pixels with a tent filter and per-sub-pixel clamping to [0, 1].",
+        "# Full quality (smallpt's size; `./smallpt 64` takes 64 spp):",
+        f"#   glint render examples/smallpt.yaml --width {width} --height {height} --spp 64 -o smallpt.png",
+        "render: {width: 256, height: 192, samples: 4, integrator: path, max_depth: 50}",
+        f"camera: {{type: pinhole, eye: {vec(cam['origin'])}, look_at: {vec(look_at)}, up: [0, 1, 0], fov: {num(fov)}}}",
+        "objects:",
+    ]
+    lights = []
+    for s in data["spheres"]:
+        name = s["name"]
+        if name == "Frnt":
+            continue
+        shape = f"{{type: sphere, center: {vec(s['center'])}, radius: {num(s['radius'])}}}"
+        if any(s["emission"]):
+            assert not any(s["color"]), "an emitter that also reflects needs an emissive + matte material"
+            lights.append(f"  - {{type: area, radiance: {vec(s['emission'])}, shape: {shape}}}  # {name}")
+            continue
+        kind = s["material"]
+        if kind == "DIFF":
+            material = f"{{type: matte, albedo: {vec(s['color'])}}}"
+        elif kind == "SPEC":
+            material = f"{{type: mirror, reflectance: {vec(s['color'])}}}"
+        elif kind == "REFR":
+            material = f"{{type: dielectric, ior: {num(s['ior'])}, tint: {vec(s['color'])}}}"
+        else:
+            raise ValueError(f"unknown smallpt material {kind}")
+        out.append(f"  - {{type: sphere, center: {vec(s['center'])}, radius: {num(s['radius'])},"
+                   f" material: {material}}}  # {name}")
+    out.append("lights:")
+    out.extend(lights)
+    return "\n".join(out) + "\n"
+
+
+def main():
+    here = os.path.dirname(os.path.abspath(__file__))
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--shared", default=os.path.join(here, "..", "..", "shared"))
+    parser.add_argument("--out", default=os.path.join(here, "..", "examples"))
+    args = parser.parse_args()
+    scenes = os.path.join(args.shared, "data", "scenes")
+    with open(os.path.join(scenes, "rtiow-book1-final.json")) as f:
+        rtiow = convert_rtiow(json.load(f))
+    with open(os.path.join(scenes, "smallpt.json")) as f:
+        smallpt = convert_smallpt(json.load(f))
+    for name, text in (("rtiow-final.yaml", rtiow), ("smallpt.yaml", smallpt)):
+        with open(os.path.join(args.out, name), "w") as f:
+            f.write(text)
+        print("wrote", os.path.join(args.out, name))
+
+
+if __name__ == "__main__":
+    main()
