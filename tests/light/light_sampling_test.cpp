@@ -3,6 +3,8 @@
 
 #include "glint/core/frame.hpp"
 #include "glint/core/hash.hpp"
+#include "glint/geometry/disk.hpp"
+#include "glint/geometry/rectangle.hpp"
 #include "glint/geometry/sphere.hpp"
 #include "glint/light/area.hpp"
 #include "glint/light/directional.hpp"
@@ -35,6 +37,7 @@ struct DirectionHistogram {
     Frame frame;
     double cos_min;
     int rows = 16, columns = 32;
+    int sub = 8;  // sub-cells per cell side for the midpoint rule
 
     int cell(const Vec3& w) const {
         const Vec3 local = frame.to_local(w);
@@ -50,7 +53,7 @@ struct DirectionHistogram {
 
     template <typename Pdf>
     std::vector<double> expected(Pdf&& pdf, double n) const {
-        constexpr int kSub = 8;
+        const int kSub = sub;
         std::vector<double> e(static_cast<size_t>(rows * columns + 1), 0.0);
         const double d_cos = (1 - cos_min) / (rows * kSub);
         const double d_phi = 2 * kPi / (columns * kSub);
@@ -83,10 +86,17 @@ std::optional<Hit> hit_on(const Shape& shape, const Hit& at, const Vec3& w) {
     return h;
 }
 
-void check_area_light(const Sphere& sphere, const Hit& at, double cos_min, const Vec3& axis) {
+// A shape with edges has a density that jumps at them: `coarse` uses fewer, finer-integrated cells there.
+void check_area_light(const Shape& sphere, const Hit& at, double cos_min, const Vec3& axis,
+                      bool coarse = false) {
     const AreaEmitter emitter(Rgb(2.0), true);
     const AreaLight light(sphere, emitter, 1);
-    const DirectionHistogram histogram{Frame::from_normal(axis), cos_min};
+    DirectionHistogram histogram{Frame::from_normal(axis), cos_min};
+    if (coarse) {
+        histogram.rows = 8;
+        histogram.columns = 16;
+        histogram.sub = 64;
+    }
     std::vector<double> observed(static_cast<size_t>(histogram.rows * histogram.columns + 1), 0.0);
     int missing = 0;
     for (int i = 0; i < kSamples; ++i) {
@@ -132,6 +142,19 @@ TEST(LightSampling, SphereLightFromInsideSamplesByArea) {
     const Sphere sphere({0, 0, 0}, 2);
     const Hit at = surface_at({0.3, -0.8, 0.5}, {0, 1, 0});
     check_area_light(sphere, at, -1, {0, 1, 0});
+}
+
+TEST(LightSampling, RectangleAndDiskLightsSampleByArea) {
+    // Seen obliquely and close, so the solid-angle density varies strongly over the shape.
+    const Hit at = surface_at({0.2, 0, 0.1}, {0, 1, 0});
+    check_area_light(Rectangle({-1, 1, -0.5}, {2.5, 0.3, 0}, {0, 0.2, 1.5}), at, 0, {0, 1, 0}, true);
+    check_area_light(Disk({0.5, 1.2, 0.3}, normalize(Vec3{0.3, -1, 0.2}), 0.9), at, 0, {0, 1, 0}, true);
+    // Σ 1/pdf over samples estimates the solid angle; for a small rectangle seen head-on it is ≈ A / d².
+    const Rectangle small({-0.01, 10, -0.01}, {0.02, 0, 0}, {0, 0, 0.02});
+    const AreaEmitter emitter(Rgb(1.0), true);
+    const AreaLight light(small, emitter, 1);
+    const Hit origin = surface_at({0, 0, 0}, {0, 1, 0});
+    EXPECT_NEAR(1 / light.sample(origin, {0.5, 0.5})->pdf, 0.0004 / 100, 1e-9);
 }
 
 TEST(LightSampling, FarTinySphereKeepsItsPrecision) {
