@@ -2,7 +2,12 @@
 // of an area light, and the agreement of the integrators where their physics coincide.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
+#include <filesystem>
+
 #include "glint/core/hash.hpp"
+#include "glint/image/image_io.hpp"
 #include "glint/integrator/direct_lighting.hpp"
 #include "glint/light/area.hpp"
 #include "integrator/radiance_util.hpp"
@@ -61,6 +66,78 @@ lights: [{type: environment, radiance: 1.5}]
         expect_mean(region_mean(film, 4, 4, 12, 12), albedo * 1.5);
         EXPECT_NEAR(film.pixel(0, 0).g, 1.5, 1e-12);  // the sky itself, in a corner
     }
+}
+
+TEST(Furnace, ConvexMatteUnderAConstantImageEnvironment) {
+    // The image path (loading, importance sampling with its sin θ Jacobian) must integrate to the same.
+    const auto file =
+        std::filesystem::temp_directory_path() / ("glint-furnace-" + std::to_string(::getpid()) + ".pfm");
+    Image sky(16, 8);
+    for (float& v : sky.rgb) {
+        v = 0.7f;
+    }
+    write_image(sky, file);
+    const Scene scene = scene_from_yaml(R"(
+render: {width: 16, height: 16, samples: 16, integrator: path, max_depth: 50}
+camera: {eye: [0, 0, 4], look_at: [0, 0, 0], fov: 30}
+objects: [{type: sphere, radius: 1, material: {type: matte, albedo: 0.5}}]
+lights: [{type: environment, image: ')" +
+                                        file.string() + R"(', rotation: 40}]
+)");
+    std::filesystem::remove(file);
+    const Film film = render_film(scene);
+    expect_mean(region_mean(film, 4, 4, 12, 12), 0.5 * 0.7f);
+}
+
+TEST(Furnace, GlassUnderAUniformSkyNeitherGainsNorLosesLight) {
+    // A clear dielectric sphere under a uniform sky: every path through it ends in the sky, so each
+    // pixel sees the sky's radiance; Whitted's Fresnel split must give it too, up to the branches it
+    // prunes.
+    for (const char* integrator : {"whitted", "path"}) {
+        Scene scene = scene_from_yaml(std::string(R"(
+render: {width: 12, height: 12, samples: 4, max_depth: 40, integrator: )") +
+                                      integrator + R"(}
+camera: {eye: [0, 0, 4], look_at: [0, 0, 0], fov: 30}
+objects: [{type: sphere, radius: 1}]
+lights: [{type: environment, radiance: 1}]
+)");
+        set_material(scene, 0, std::make_unique<test::SmoothGlass>(1.5, Rgb{}));
+        const Film film = render_film(scene);
+        if (std::string(integrator) == "path") {  // Russian roulette: exact only in the mean
+            expect_mean(region_mean(film, 0, 0, 12, 12), 1.0);
+            continue;
+        }
+        for (int y = 0; y < 12; ++y) {
+            for (int x = 0; x < 12; ++x) {
+                EXPECT_NEAR(film.pixel(x, y).r, 1.0, 2e-3) << integrator << " " << x << ", " << y;
+                EXPECT_LE(film.pixel(x, y).r, 1.0 + 1e-9) << integrator << " " << x << ", " << y;
+            }
+        }
+    }
+}
+
+TEST(AmbientOcclusion, ProbesSeeWhatBlocksTheAmbientLight) {
+    const auto floor_radiance = [](const std::string& extra_objects, const std::string& ao) {
+        const Scene scene = scene_from_yaml(R"(
+render: {width: 8, height: 8, samples: 16, integrator: raycast}
+camera: {eye: [2, 0.5, 0], look_at: [2, 0, 0], up: [0, 0, -1], fov: 20}
+objects:
+  - {type: plane, normal: [0, 1, 0], material: {type: matte, albedo: 0.5}}
+)" + extra_objects + "lights: [" + ao + "]\n");
+        return region_mean(render_film(scene), 0, 0, 8, 8);
+    };
+    // Open sky: ρ L. A ceiling at height 1: out of reach of probes 0.5 long.
+    EXPECT_NEAR(floor_radiance("", "{type: ambient-occlusion, radiance: 1}").mean, 0.5, 1e-12);
+    const std::string ceiling = "  - {type: plane, point: [0, 1, 0], normal: [0, 1, 0]}\n";
+    EXPECT_NEAR(floor_radiance(ceiling, "{type: ambient-occlusion, radiance: 1, distance: 0.5}").mean, 0.5,
+                1e-12);
+    // Probes 2 long reach the ceiling when cos θ > 1/2; for cosine-weighted directions cos² θ is uniform,
+    // so a quarter of them get past: ρ L / 4.
+    expect_mean(floor_radiance(ceiling, "{type: ambient-occlusion, radiance: 1, distance: 2}"), 0.125);
+    // A wall x = 0 beside the floor blocks the half of the cosine-weighted hemisphere towards it.
+    expect_mean(floor_radiance("  - {type: plane, normal: [1, 0, 0]}\n",
+                               "{type: ambient-occlusion, radiance: 1, samples: 4}"),
+                0.25);
 }
 
 TEST(Furnace, InsideAClosedEmittingSphereRadianceIsEmissionOverOneMinusAlbedo) {

@@ -26,11 +26,11 @@ Rgb medium_after(const Material& material, const Hit& hit, const Vec3& wo, const
 Rgb WhittedIntegrator::radiance(const Scene& scene, const Ray& ray, SampleStream& samples,
                                 RayCounters& rays) const {
     ++rays.camera;
-    return trace(scene, ray, 0, Rgb{}, samples, rays);
+    return trace(scene, ray, 0, Rgb{}, 1.0, samples, rays);
 }
 
 Rgb WhittedIntegrator::trace(const Scene& scene, const Ray& ray, int depth, const Rgb& absorption,
-                             SampleStream& samples, RayCounters& rays) const {
+                             double weight, SampleStream& samples, RayCounters& rays) const {
     Hit hit;
     if (!scene.intersect(ray, kInf, hit)) {
         return scene.escaped(ray.direction);
@@ -46,13 +46,15 @@ Rgb WhittedIntegrator::trace(const Scene& scene, const Ray& ray, int depth, cons
         // lobes of a dielectric, which are then both traced: Whitted's deterministic split.
         const std::optional<BsdfSample> first = material.sample(hit, wo, {0.0, 0.5});
         const std::optional<BsdfSample> second = material.sample(hit, wo, {1.0 - 0x1p-53, 0.5});
-        const auto follow = [&](const BsdfSample& s, const Rgb& weight) {
-            if (weight.is_black()) {
+        const auto follow = [&](const BsdfSample& s, const Rgb& lobe_weight) {
+            const double branch_weight = weight * lobe_weight.max_component();
+            if (!(branch_weight >= kMinBranchWeight)) {
                 return;
             }
             ++rays.secondary;
             const Rgb medium = medium_after(material, hit, wo, s.wi, absorption);
-            radiance += weight * trace(scene, spawn_ray(hit, s.wi), depth + 1, medium, samples, rays);
+            radiance += lobe_weight *
+                        trace(scene, spawn_ray(hit, s.wi), depth + 1, medium, branch_weight, samples, rays);
         };
         const bool two_lobes = first && second && first->delta && second->delta && first->wi != second->wi;
         if (two_lobes) {
