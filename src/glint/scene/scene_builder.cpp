@@ -236,10 +236,9 @@ Scene build_scene(const SceneDesc& desc, const RenderOverrides& overrides) {
             // An object whose material emits is an area light, so that light sampling finds it.
             if (emits_light(*scene.materials[material])) {
                 if (!(scene.shapes.back()->area() > 0)) {
-                    throw SceneError(p.pos(), "objects[" + std::to_string(i) +
-                                                  "] emits light but its shape has no "
-                                                  "finite area (" +
-                                                  entry.name + "): it cannot be an area light");
+                    throw SceneError(p.pos(), "objects[" + std::to_string(i) + "] emits light, but a " +
+                                                  entry.name +
+                                                  " has no finite area: it cannot be an area light");
                 }
                 scene.shape_lights.back() = static_cast<std::int32_t>(scene.lights.size());
                 scene.lights.push_back(
@@ -252,7 +251,7 @@ Scene build_scene(const SceneDesc& desc, const RenderOverrides& overrides) {
     std::int32_t next_light_index = -1;
     context.add_object = [&](Params& shape_params, std::unique_ptr<Material> material) {
         const ShapeEntry& entry = lookup(shape_table(), shape_params, "shape");
-        auto shape = entry.create(shape_params, context);
+        auto shape = apply_transform(shape_params, entry.create(shape_params, context));
         shape_params.finish();
         scene.shapes.push_back(std::move(shape));
         scene.materials.push_back(std::move(material));
