@@ -313,13 +313,14 @@ class DirectOnlyMatte final : public Material {
     double albedo_;
 };
 
-TEST(IntegratorsAgree, WhittedAndPathSeeAPointLitFloorThroughAbsorbingGlass) {
+TEST(IntegratorsAgree, WhittedAndPathSeeAPointLitFloorThroughAnAbsorbingGlassSlab) {
     const std::string yaml = R"(
 render: {width: 24, height: 16, samples: 16, max_depth: 6}
 camera: {eye: [0, 2, 6], look_at: [0, 0.8, 0], fov: 40}
 objects:
   - {type: plane, normal: [0, 1, 0]}
-  - {type: sphere, center: [0, 1, 0], radius: 1}
+  # An upright slab between the camera and the lit floor, 0.4 thick, filling the lower half of the view.
+  - {type: box, min: [-4, 0.01, 3], max: [4, 1.5, 3.4]}
 lights: [{type: point, position: [-2, 5, 1], intensity: 30}]
 )";
     const auto make = [&](const char* integrator, std::uint64_t seed) {
