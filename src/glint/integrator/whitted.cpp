@@ -60,7 +60,7 @@ Rgb WhittedIntegrator::trace(const Scene& scene, const Ray& ray, int depth, cons
         if (two_lobes) {
             follow(*first, first->f * std::abs(dot(hit.shading_normal, first->wi)));
             follow(*second, second->f * std::abs(dot(hit.shading_normal, second->wi)));
-        } else if (first && first->delta) {
+        } else if ((first && first->delta) || (second && second->delta)) {
             // One delta lobe (a mirror, total internal reflection), or a material that chooses its
             // lobe otherwise: one sample with the path's own random numbers, weighted f·|cos|/pdf.
             const std::optional<BsdfSample> s = material.sample(hit, wo, samples.next_2d());
