@@ -54,7 +54,7 @@ class SmoothGlass final : public Material {
     SmoothGlass(double eta, const Rgb& absorption) : eta_(eta), absorption_(absorption) {}
     Rgb evaluate(const Hit&, const Vec3&, const Vec3&) const override { return {}; }
     double pdf(const Hit&, const Vec3&, const Vec3&) const override { return 0; }
-    Rgb absorption(const Hit&) const override { return absorption_; }
+    Rgb absorption() const override { return absorption_; }
 
     static double fresnel(double cos_i, double eta) {  // eta = n_t / n_i
         const double sin2_t = (1 - cos_i * cos_i) / (eta * eta);

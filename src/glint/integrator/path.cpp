@@ -16,7 +16,6 @@ Rgb PathIntegrator::radiance(const Scene& scene, const Ray& camera_ray, SampleSt
     ++rays.camera;
     Rgb radiance;
     Rgb throughput(1.0);
-    Rgb absorption;  // σ_a of the medium the ray is in
     Ray ray = camera_ray;
     bool specular = true;  // the last bounce was a delta lobe (or the camera): emission counts in full
     double bsdf_pdf = 0;   // solid-angle density of the last BSDF sample
@@ -35,8 +34,8 @@ Rgb PathIntegrator::radiance(const Scene& scene, const Ray& camera_ray, SampleSt
             }
             break;
         }
-        throughput *= beer_transmittance(absorption, hit.t * length(ray.direction));
         const Material& material = scene.material(hit);
+        throughput *= segment_transmittance(material, hit, ray);
         const Vec3 wo = normalize(-ray.direction);
 
         const Rgb emitted = material.emitted(hit, wo);
@@ -83,7 +82,6 @@ Rgb PathIntegrator::radiance(const Scene& scene, const Ray& camera_ray, SampleSt
         throughput *= s->f * (std::abs(dot(hit.shading_normal, s->wi)) / s->pdf);
         specular = s->delta;
         bsdf_pdf = s->pdf;
-        absorption = medium_after(material, hit, wo, s->wi, absorption);
         previous = at;
 
         if (bounce + 1 >= kRouletteStart) {

@@ -5,32 +5,22 @@
 
 namespace glint {
 
-Rgb beer_transmittance(const Rgb& absorption, double distance) {
-    if (absorption.is_black()) {
-        return Rgb(1.0);
+Rgb segment_transmittance(const Material& material, const Hit& hit, const Ray& ray) {
+    if (dot(ray.direction, hit.normal) <= 0) {
+        return Rgb(1.0);  // arrived from outside: the segment ran through air
     }
-    return {std::exp(-absorption.r * distance), std::exp(-absorption.g * distance),
-            std::exp(-absorption.b * distance)};
-}
-
-Rgb medium_after(const Material& material, const Hit& hit, const Vec3& wo, const Vec3& wi,
-                 const Rgb& current) {
-    const double side_out = dot(hit.normal, wo);
-    const double side_in = dot(hit.normal, wi);
-    if (side_out * side_in > 0) {
-        return current;  // reflected: still in the same medium
-    }
-    return side_in < 0 ? material.absorption(hit) : Rgb{};  // into the object, or out into air
+    const Rgb sigma = material.absorption();
+    return sigma.is_black() ? Rgb(1.0) : beer_transmittance(sigma, hit.t * length(ray.direction));
 }
 
 Rgb WhittedIntegrator::radiance(const Scene& scene, const Ray& ray, SampleStream& samples,
                                 RayCounters& rays) const {
     ++rays.camera;
-    return trace(scene, ray, 0, Rgb{}, 1.0, samples, rays);
+    return trace(scene, ray, 0, 1.0, samples, rays);
 }
 
-Rgb WhittedIntegrator::trace(const Scene& scene, const Ray& ray, int depth, const Rgb& absorption,
-                             double weight, SampleStream& samples, RayCounters& rays) const {
+Rgb WhittedIntegrator::trace(const Scene& scene, const Ray& ray, int depth, double weight,
+                             SampleStream& samples, RayCounters& rays) const {
     Hit hit;
     if (!scene.intersect(ray, kInf, hit)) {
         return scene.escaped(ray.direction);
@@ -52,9 +42,8 @@ Rgb WhittedIntegrator::trace(const Scene& scene, const Ray& ray, int depth, cons
                 return;
             }
             ++rays.secondary;
-            const Rgb medium = medium_after(material, hit, wo, s.wi, absorption);
-            radiance += lobe_weight *
-                        trace(scene, spawn_ray(hit, s.wi), depth + 1, medium, branch_weight, samples, rays);
+            radiance +=
+                lobe_weight * trace(scene, spawn_ray(hit, s.wi), depth + 1, branch_weight, samples, rays);
         };
         const bool two_lobes = first && second && first->delta && second->delta && first->wi != second->wi;
         if (two_lobes) {
@@ -69,7 +58,7 @@ Rgb WhittedIntegrator::trace(const Scene& scene, const Ray& ray, int depth, cons
             }
         }
     }
-    return radiance * beer_transmittance(absorption, hit.t * length(ray.direction));
+    return radiance * segment_transmittance(material, hit, ray);
 }
 
 }  // namespace glint

@@ -6,6 +6,7 @@ namespace glint {
 
 class Material;
 struct Hit;
+struct Ray;
 
 // Whitted's model (1980; the paper §VI–VIII): at each surface the ambient term, direct light from every
 // light with shadow rays (hard, or soft from lights with area and several samples), plus recursive
@@ -22,20 +23,15 @@ class WhittedIntegrator final : public Integrator {
   private:
     static constexpr double kMinBranchWeight = 1e-4;
 
-    // `absorption`: σ_a of the medium the ray travels through (zero in air); `weight`: the largest
-    // channel of the product of the lobe weights from the camera to here.
-    Rgb trace(const Scene& scene, const Ray& ray, int depth, const Rgb& absorption, double weight,
-              SampleStream& samples, RayCounters& rays) const;
+    // `weight`: the largest channel of the product of the lobe weights from the camera to here.
+    Rgb trace(const Scene& scene, const Ray& ray, int depth, double weight, SampleStream& samples,
+              RayCounters& rays) const;
 
     int max_depth_;
 };
 
-// Beer's law: the fraction of light left after `distance` in a medium of absorption σ_a.
-Rgb beer_transmittance(const Rgb& absorption, double distance);
-
-// σ_a of the medium a ray leaving `hit` in direction wi enters: the object's when wi crosses into it,
-// air (zero) when it leaves, and `current` when it stays on the same side (reflection).
-Rgb medium_after(const Material& material, const Hit& hit, const Vec3& wo, const Vec3& wi,
-                 const Rgb& current);
+// Beer's law along a ray segment that ended at `hit`: a ray that meets a surface from inside
+// (dot(direction, normal) > 0) crossed that surface's material, which keeps beer_transmittance of it.
+Rgb segment_transmittance(const Material& material, const Hit& hit, const Ray& ray);
 
 }  // namespace glint

@@ -1,15 +1,14 @@
 #include "glint/light/ambient_occlusion.hpp"
 
 #include "glint/core/frame.hpp"
+#include "glint/material/material.hpp"
 #include "glint/scene/params.hpp"
 
 namespace glint {
 
 std::optional<LightSample> AmbientOcclusionLight::sample(const Hit& at, Point2 u) const {
-    // Cosine-weighted direction (Malley): probes fall where an ambient term weighs most.
-    const double r = std::sqrt(u.x);
-    const double phi = 2 * kPi * u.y;
-    const Vec3 local{r * std::cos(phi), r * std::sin(phi), safe_sqrt(1 - u.x)};
+    // Cosine-weighted directions: probes fall where an ambient term weighs most.
+    const Vec3 local = sample_cosine_hemisphere(u);
     LightSample s;
     s.wi = Frame::from_normal(at.shading_normal).to_world(local);
     s.radiance = radiance_;
