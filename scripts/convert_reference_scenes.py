@@ -34,7 +34,7 @@ MATERIALS = {
 }
 
 
-def convert_rtiow(data):
+def convert_rtiow(data, defocus=True):
     cam = data["camera"]
     width, height = cam["image_width"], cam["image_height"]
     # RTIOW's defocus disk radius is focus_dist · tan(defocus_angle / 2).
@@ -46,7 +46,9 @@ def convert_rtiow(data):
         "# Camera: vfov 20°, thin lens of radius focus_dist · tan(defocus_angle / 2) focused at 10. Light: the",
         "# book's sky, white at the nadir to (0.5, 0.7, 1) at the zenith, lerped by 0.5 (dir.y + 1), as an",
         "# environment light (so it also lights the scene, as in the book). Materials: lambertian → matte,",
-        "# metal (fuzz) → metal, dielectric → dielectric (the book uses Schlick's Fresnel approximation).",
+        "# metal (fuzz) → metal with `fuzz` (glint's metal is GGX with fuzz as its roughness, where the book",
+        "# jitters the mirror direction by fuzz × a random point in the unit ball: same look, not the same",
+        "# lobe), dielectric → dielectric (the book uses Schlick's Fresnel approximation, glint the exact one).",
         "# The book's integrator is a path tracer without light sampling; glint's path tracer with next-event",
         "# estimation and MIS converges to the same image.",
         "# Full quality (the book's settings):",
@@ -54,7 +56,10 @@ def convert_rtiow(data):
         f" --max-depth {cam['max_depth']} -o rtiow-final.png",
         f"render: {{width: 200, height: 113, samples: 4, integrator: path, max_depth: {cam['max_depth']}}}",
         f"camera: {{type: thin-lens, eye: {vec(cam['lookfrom'])}, look_at: {vec(cam['lookat'])}, up: {vec(cam['vup'])},"
-        f" fov: {num(cam['vfov'])}, lens_radius: {num(lens_radius)}, focus_distance: {num(cam['focus_dist'])}}}",
+        f" fov: {num(cam['vfov'])}, lens_radius: {num(lens_radius)}, focus_distance: {num(cam['focus_dist'])}}}"
+        if defocus else
+        f"camera: {{type: pinhole, eye: {vec(cam['lookfrom'])}, look_at: {vec(cam['lookat'])}, up: {vec(cam['vup'])},"
+        f" fov: {num(cam['vfov'])}}}  # --no-defocus: the book's lens (radius {num(lens_radius)}, focus 10) left out",
         "lights:",
         "  - {type: environment, radiance: {type: gradient, bottom: [1, 1, 1], top: [0.5, 0.7, 1.0]}}",
         "objects:",
@@ -126,10 +131,12 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--shared", default=os.path.join(here, "..", "..", "shared"))
     parser.add_argument("--out", default=os.path.join(here, "..", "examples"))
+    parser.add_argument("--no-defocus", action="store_true",
+                        help="a pinhole camera for RTIOW, for builds without the thin-lens camera")
     args = parser.parse_args()
     scenes = os.path.join(args.shared, "data", "scenes")
     with open(os.path.join(scenes, "rtiow-book1-final.json")) as f:
-        rtiow = convert_rtiow(json.load(f))
+        rtiow = convert_rtiow(json.load(f), defocus=not args.no_defocus)
     with open(os.path.join(scenes, "smallpt.json")) as f:
         smallpt = convert_smallpt(json.load(f))
     for name, text in (("rtiow-final.yaml", rtiow), ("smallpt.yaml", smallpt)):
