@@ -35,8 +35,9 @@ ViewParams read_view_params(Params& params, FilmSize film) {
     const Vec3 up = params.direction("up", {0, 1, 0});
     view.basis = camera_basis(view.eye, view.look_at, up);
     if (view.basis.up_was_degenerate && up_given) {
-        params.fail("up", "camera up is parallel to the view direction, so it sets no roll; choose an up across "
-                          "the view (or leave it out for the default)");
+        params.fail("up",
+                    "camera up is parallel to the view direction, so it sets no roll; choose an up across "
+                    "the view (or leave it out for the default)");
     }
     const bool has_fov = params.has("fov");
     const bool has_distance = params.has("view_distance");
@@ -50,7 +51,8 @@ ViewParams read_view_params(Params& params, FilmSize film) {
     } else {
         const double fov = params.number("fov", 40.0);
         if (!(fov > 0 && fov < 180)) {
-            params.fail("fov", "camera fov is the vertical field of view in degrees: between 0 and 180, exclusive");
+            params.fail("fov",
+                        "camera fov is the vertical field of view in degrees: between 0 and 180, exclusive");
         }
         // The view plane at distance d shows height/2 pixels above the centre: tan(fov/2) = (h/2)/d.
         view.view_distance = 0.5 * film.height / std::tan(radians(fov) / 2);

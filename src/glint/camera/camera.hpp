@@ -14,7 +14,7 @@ class Params;
 struct BuildContext;
 
 class Camera {
-public:
+  public:
     virtual ~Camera() = default;
     // `film` is in pixels: x right from the left edge, y down from the top edge, pixel (i, j) covering
     // [i, i+1) × [j, j+1). `lens` is a point of the unit square, for cameras with an aperture.
