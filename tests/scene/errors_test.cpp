@@ -1,6 +1,7 @@
 // One test per class of scene error: each must be reported at the right line and column.
 #include <gtest/gtest.h>
 
+#include "glint/core/hash.hpp"
 #include "glint/scene/scene.hpp"
 #include "glint/scene/scene_desc.hpp"
 #include "test_util.hpp"
@@ -145,6 +146,56 @@ TEST(SceneErrors, JsonScenesAreReadWithPositions) {
     const Reported r = error_of("{\n  \"objects\": [\n    {\"type\": \"sphere\", \"radius\": 0}\n  ]\n}\n");
     EXPECT_EQ(r.line, 3);
     EXPECT_EQ(r.column, 34);
+}
+
+}  // namespace
+}  // namespace glint
+
+namespace glint {
+namespace {
+
+TEST(SceneErrors, LongLinesAreQuotedAroundTheColumnOnly) {
+    const std::string padding(5000, ' ');
+    const Reported r = error_of("objects: [" + padding + "{type: sphere, radius: -1}]\n");
+    EXPECT_EQ(r.line, 1);
+    EXPECT_EQ(r.column, 5034);
+    EXPECT_LT(r.report.size(), 400u) << r.report;
+    // The caret still sits under the offending value.
+    const auto last_line = r.report.substr(r.report.rfind('\n') + 1);
+    const auto quoted = r.report.substr(0, r.report.rfind('\n'));
+    const auto quoted_line = quoted.substr(quoted.rfind('\n') + 1);
+    EXPECT_EQ(quoted_line.substr(last_line.size() - 1, 2), "-1");
+}
+
+// Malformed input of any kind is a SceneError, never a crash or another exception: every
+// truncation of the default scene, and many random byte changes to it.
+TEST(SceneErrors, MutatedScenesFailCleanly) {
+    const std::string text = default_scene_text();
+    int errors = 0;
+    const auto attempt = [&](const std::string& mutated) {
+        try {
+            RenderOverrides small;
+            small.width = 4;
+            small.height = 4;
+            build_scene(parse_scene_text(mutated, "mutated.yaml", "."), small);
+        } catch (const SceneError&) {
+            ++errors;
+        }
+    };
+    for (size_t n = 0; n < text.size(); n += 3) {
+        attempt(text.substr(0, n));
+    }
+    const std::string alphabet = "-:[]{},#'\"\t\n 0.e9xyz";
+    for (std::uint32_t i = 0; i < 3000; ++i) {
+        std::string mutated = text;
+        const SampleKey key{99, i, 0, 0};
+        for (int k = 0; k < 3; ++k) {
+            const size_t at = static_cast<size_t>(key.uniform(2 * k) * mutated.size());
+            mutated[at] = alphabet[static_cast<size_t>(key.uniform(2 * k + 1) * alphabet.size())];
+        }
+        attempt(mutated);
+    }
+    EXPECT_GT(errors, 1000);  // most mutations are errors; none escaped as anything else
 }
 
 }  // namespace
