@@ -208,6 +208,7 @@ lights: [{type: ambient, radiance: 1}]
     const double blurred = second_moment(render("blurred", 1.5));
     const double diameter_pixels = 2 * std::sqrt(2 * (blurred - sharp));
     const double expected_pixels = (2 * 1.5 * std::abs(10.0 - 5.0) / 10.0) / (5.0 / 100.0);
+    RecordProperty("measured_diameter_pixels", std::to_string(diameter_pixels));
     EXPECT_NEAR(diameter_pixels, expected_pixels, 0.05 * expected_pixels) << "sharp moment " << sharp;
 }
 
