@@ -212,5 +212,54 @@ lights: [{type: ambient, radiance: 1}]
     EXPECT_NEAR(diameter_pixels, expected_pixels, 0.05 * expected_pixels) << "sharp moment " << sharp;
 }
 
+TEST(ThinLens, RenderedHorizonEdgeBlursByTheLensDiameter) {
+    // An edge: the horizon of an unlit floor 1000 units below the eye against a white sky. Its points lie
+    // at infinity, where the circle of confusion 2r·|z − z_f|/z on the focus plane tends to the lens
+    // diameter 2r: seen from lens point L the horizon shifts by L's offset, so the sharp edge is smeared
+    // by the lens disk. With r = 0.15, z_f = 1 and d = 100 pixels (0.01 units a pixel on the focus
+    // plane) that disk is 30 pixels across. Floor points within 30 pixels of the horizon are ≥ 3333 units
+    // away, where the blur differs from 2r by < 0.03%.
+    // The edge's profile across rows is the fraction of the disk beyond each row; its derivative (the
+    // line spread) has variance b²/4 for a disk of radius b, and variances add under convolution, so
+    // b² = 4·(variance blurred − variance in focus) whatever the pixels add.
+    test::TempDir dir;
+    const auto line_spread_variance = [&](const std::string& name, double lens_radius) {
+        const auto scene = dir.write(name + ".yaml", R"(
+render: {width: 48, height: 64, samples: 256, sampler: jittered}
+camera: {type: thin-lens, eye: [0, 1000, 0], look_at: [0, 1000, -1], view_distance: 100, focus_distance: 1,
+         lens_radius: )" + std::to_string(lens_radius) + R"(}
+background: 1
+materials: {grey: {type: matte, albedo: 0.5}}
+objects: [{type: plane, point: [0, 0, 0], normal: [0, 1, 0], material: grey}]
+)");
+        const auto out = dir / (name + ".pfm");
+        const auto r = test::run_glint("render '" + scene.string() + "' -o '" + out.string() + "' --quiet");
+        EXPECT_EQ(r.exit_code, 0) << r.output;
+        const Image image = read_pfm(out);
+        std::vector<double> profile(image.height, 0);  // the sky's share of each row
+        for (int y = 0; y < image.height; ++y) {
+            for (int x = 0; x < image.width; ++x) {
+                profile[y] += image.pixel(x, y)[0] / image.width;
+            }
+        }
+        EXPECT_NEAR(profile.front(), 1, 1e-6);  // the edge lies well inside the image
+        EXPECT_NEAR(profile.back(), 0, 1e-6);
+        double total = 0, mean = 0, second = 0;
+        for (int y = 0; y + 1 < image.height; ++y) {
+            const double spread = profile[y] - profile[y + 1];  // at the boundary y + 1 between the rows
+            total += spread;
+            mean += spread * (y + 1);
+            second += spread * sqr(y + 1);
+        }
+        mean /= total;
+        return second / total - mean * mean;
+    };
+    const double sharp = line_spread_variance("sharp", 0);
+    const double blurred = line_spread_variance("blurred", 0.15);
+    const double diameter_pixels = 2 * std::sqrt(4 * (blurred - sharp));
+    RecordProperty("measured_edge_blur_pixels", std::to_string(diameter_pixels));
+    EXPECT_NEAR(diameter_pixels, 30, 0.05 * 30) << "in-focus variance " << sharp;
+}
+
 }  // namespace
 }  // namespace glint
