@@ -179,6 +179,19 @@ TEST(Warps, UniformConeFitsItsDensity) {
                                 [&](const Vec3&) { return uniform_cone_pdf(cos_max); }, cos_max, 7));
 }
 
+TEST(Warps, NarrowConeKeepsItsAngle) {
+    // A cone about 1e-6 rad wide (a far, small light). 1 − cos θ is uniform in [0, 1 − cos_max), so
+    // θ = 2 asin(√(x (1 − cos_max)/2)) exactly; a sine taken from 1 − cos² would be off by ~1e-3 here.
+    const double cos_max = std::cos(1e-6);
+    for (const double x : {0.0, 0.25, 0.5, 0.999999}) {
+        const Vec3 d = square_to_uniform_cone({x, 0.3}, cos_max);
+        const double theta = std::atan2(std::hypot(d.x, d.y), d.z);
+        const double expected = 2 * std::asin(std::sqrt(x * (1 - cos_max) / 2));
+        EXPECT_NEAR(theta, expected, 1e-9 * 1e-6) << x;
+        EXPECT_NEAR(length(d), 1, 1e-15);
+    }
+}
+
 TEST(Warps, ChiSquareTestRejectsASlightlyWrongDensity) {
     // The test has power: cosine-weighted samples (e = 1) against the density for e = 1.1, or the
     // points of a sphere warp fed a square squeezed by 5% along x, are rejected.

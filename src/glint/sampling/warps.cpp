@@ -5,11 +5,13 @@
 namespace glint {
 
 namespace {
-// The unit vector at polar cosine z and azimuth 2π·v about +z.
-Vec3 direction_from(double cos_theta, double v) {
-    const double sin_theta = safe_sqrt(1 - cos_theta * cos_theta);
+// The unit vector at polar angle θ (given by its cosine and sine) and azimuth 2π·v about +z.
+Vec3 direction_from(double cos_theta, double sin_theta, double v) {
     const double phi = 2 * kPi * v;
     return {sin_theta * std::cos(phi), sin_theta * std::sin(phi), cos_theta};
+}
+Vec3 direction_from(double cos_theta, double v) {
+    return direction_from(cos_theta, safe_sqrt(1 - cos_theta * cos_theta), v);
 }
 }  // namespace
 
@@ -68,9 +70,11 @@ double uniform_sphere_pdf() {
 }
 
 Vec3 square_to_uniform_cone(Point2 u, double cos_max) {
-    // z is uniform in [cos_max, 1] (the cone's cap is a zone of the sphere); 1 − u.x keeps z = 1 reachable
-    // and z = cos_max out, so a sample never lies exactly on a light's silhouette.
-    return direction_from(1 - u.x * (1 - cos_max), u.y);
+    // z is uniform in (cos_max, 1] (the cone's cap is a zone of the sphere): 1 − z = u.x (1 − cos_max),
+    // never reaching the rim, so a sample never lies exactly on a light's silhouette. sin θ comes from
+    // 1 − z² = (1 − z)(1 + z), which keeps its precision in the narrow cones of small, far lights.
+    const double one_minus_z = u.x * (1 - cos_max);
+    return direction_from(1 - one_minus_z, safe_sqrt(one_minus_z * (2 - one_minus_z)), u.y);
 }
 
 double uniform_cone_pdf(double cos_max) {
