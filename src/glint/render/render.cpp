@@ -18,6 +18,9 @@ Rgb render_sample(const Scene& scene, const Sampler& sampler, const Integrator& 
     const Point2 offset = sampler.sample_2d(key, kFilmDimension);
     const Point2 lens = sampler.sample_2d(key, kLensDimension);
     const Ray ray = scene.camera->generate_ray({x + offset.x, y + offset.y}, lens);
+    if (!sees_scene(ray)) {
+        return Rgb{};  // outside the camera's image (a fisheye's corners): black, nothing traced
+    }
     SampleStream stream(sampler, key, kFirstIntegratorDimension);
     return integrator.radiance(scene, ray, stream, rays);
 }
