@@ -2,6 +2,7 @@
 // each mistake is reported at its position before anything is rendered.
 #include <map>
 
+#include "glint/geometry/instance.hpp"
 #include "glint/integrator/integrator.hpp"
 #include "glint/material/matte.hpp"
 #include "glint/sampling/sampler.hpp"
@@ -225,6 +226,7 @@ Scene build_scene(const SceneDesc& desc, const RenderOverrides& overrides) {
             Params shape_params(objects->items[i], entry.name);
             shape_params.string("type");
             auto shape = entry.create(shape_params, context);
+            shape = apply_transform(shape_params, std::move(shape));  // `transform:`, any object
             const std::uint32_t material = material_for(shape_params);
             shape_params.finish();
             scene.shapes.push_back(std::move(shape));
