@@ -72,7 +72,8 @@ size_t edit_distance(const std::string& a, const std::string& b) {
 
 std::string closest_match(const std::string& word, const std::vector<std::string>& candidates) {
     std::string best;
-    size_t best_distance = std::max<size_t>(2, word.size() / 3) + 1;
+    // Suggest only what is close: up to two edits, or half the word for long words (rotation → rotate).
+    size_t best_distance = std::max<size_t>(2, word.size() / 2) + 1;
     for (const std::string& candidate : candidates) {
         const size_t d = edit_distance(word, candidate);
         if (d < best_distance) {
