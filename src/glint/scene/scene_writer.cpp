@@ -119,11 +119,17 @@ std::string flow(const Node& node, int depth = 0) {
 void write_block(const Node& node, int indent, std::string& out);
 
 // Writes a value that follows "key:" or "- " on the same line, or on indented lines below.
-// `top_level`: a section of the scene (render, camera, objects, …), always a block when a collection.
+// `top_level`: a section of the scene (render, camera, objects, …).
 void write_value(const Node& node, int indent, std::string& out, bool after_dash, bool top_level = false) {
     const std::string one_line = flow(node);
     const bool collection = node.is_map() || node.is_sequence();
-    if (!one_line.empty() && (!collection || !top_level || node.items.empty())) {
+    // Top-level maps are blocks; a top-level list is one line only if it holds plain values ([r, g, b]).
+    bool plain_items = true;
+    for (const Node& item : node.items) {
+        plain_items = plain_items && !item.is_map() && !item.is_sequence();
+    }
+    const bool as_block = top_level && (node.is_map() || !plain_items);
+    if (!one_line.empty() && (!collection || !as_block || node.items.empty())) {
         out += ' ';
         out += one_line;
         out += '\n';

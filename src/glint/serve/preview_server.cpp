@@ -1,6 +1,7 @@
 #include "glint/serve/preview_server.hpp"
 
 #include <httplib.h>
+#include <sys/socket.h>
 
 #include <nlohmann/json.hpp>
 
@@ -16,7 +17,8 @@ namespace glint {
 namespace {
 
 constexpr size_t kMaxRequestBody = 64 * 1024;
-constexpr auto kKeepAliveComment = std::chrono::seconds(10);
+// An idle stream writes a comment this often, which is also how a closed browser tab is noticed.
+constexpr auto kKeepAliveComment = std::chrono::seconds(2);
 
 void send_json(httplib::Response& res, const nlohmann::ordered_json& body, int status = 200) {
     res.status = status;
@@ -71,6 +73,7 @@ struct PreviewServer::Impl {
     int port = 0;
     std::atomic<int> open_streams{0};
     std::atomic<bool> stopping{false};
+    int listen_socket = -1;
 
     Impl(const SceneDesc& desc, const std::string& name) : session(desc, name) {}
 
@@ -112,6 +115,12 @@ struct PreviewServer::Impl {
 
     void routes() {
         http.new_task_queue = [] { return new httplib::ThreadPool(kThreads); };
+        // Keep httplib's own socket options (address reuse) and remember the socket, see bind().
+        http.set_socket_options([this](int socket) {
+            int yes = 1;
+            ::setsockopt(socket, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof(yes));
+            listen_socket = socket;
+        });
         http.set_payload_max_length(kMaxRequestBody);
         http.set_keep_alive_timeout(2);
         http.set_read_timeout(5);
@@ -267,6 +276,11 @@ int PreviewServer::bind(const std::string& host, int port) {
     if (impl_->port <= 0) {
         throw std::runtime_error("cannot listen on " + host + ":" + std::to_string(port) +
                                  " (is the port in use, or the address not this machine's?)");
+    }
+    // The packaged httplib listens with a backlog of 5: many browsers or clients connecting at once
+    // would see their connections dropped and retried. listen() again raises it (Linux allows that).
+    if (impl_->listen_socket >= 0) {
+        ::listen(impl_->listen_socket, SOMAXCONN);
     }
     return impl_->port;
 }
