@@ -100,7 +100,7 @@ std::uint64_t PreviewSession::apply(const std::vector<SceneEdit>& edits) {
 
 PreviewSession::State PreviewSession::state() const {
     std::lock_guard lock(mutex_);
-    return {generation_.load(), root_, yaml_, scene_->settings.width, scene_->settings.height};
+    return {generation_.load(), root_, yaml_, scene_->settings};
 }
 
 std::shared_ptr<const PreviewFrame> PreviewSession::latest_frame() const {

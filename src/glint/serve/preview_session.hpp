@@ -63,7 +63,7 @@ class PreviewSession {
         std::uint64_t generation;
         Node root;
         std::string yaml;
-        int width, height;
+        RenderSettings settings;  // as built: the defaults filled in
     };
     State state() const;
     const std::string& display_name() const { return display_name_; }
