@@ -141,7 +141,38 @@ try {
   await red.press('Enter');
   await page.waitForSelector('#error', {state: 'hidden'});
 
-  // 5. Save downloads the PNG of the current image; Export the scene's YAML.
+  // 5. Click-to-focus: double-clicking the red sphere's centre casts a ray there. With a lens camera
+  // in the tables the page sets focus_distance to the hit's depth (the unit sphere at (0, 1, 0) seen
+  // from about 7 away); with only a pinhole, the server's message says the camera takes no focus.
+  const scene5 = await page.evaluate(() => fetch('/api/scene').then((r) => r.json()));
+  const generation5 = scene5.generation;
+  const target = scene5.scene.camera.look_at;
+  assert.deepEqual(target, [0, 0.8, 0]);
+  await page.locator('#image').dblclick({position: {x: box.width / 2, y: box.height / 2}});
+  await page.waitForFunction(async (g) => !document.getElementById('error').hidden ||
+    (await fetch('/api/scene').then((r) => r.json())).generation > g, generation5);
+  const focused = await page.evaluate(() => fetch('/api/scene').then((r) => r.json()));
+  if (focused.generation > generation5) {
+    const eye = focused.scene.camera.eye;
+    const toCentre = Math.hypot(eye[0], eye[1] - 1, eye[2]);
+    log('focused at', focused.scene.camera.focus_distance, 'with camera', focused.scene.camera.type);
+    assert.ok(Math.abs(focused.scene.camera.focus_distance - (toCentre - 1)) < 0.15, 'focus on the sphere\'s front');
+  } else {
+    const text = await page.$eval('#error', (e) => e.textContent);
+    log('focus on a pinhole:', text.split('\n')[0]);
+    assert.match(text, /focus_distance/);
+  }
+
+  // 6. Resolution: a preset changes the image size and restarts the accumulation.
+  const generation6 = (await stats(page)).generation;
+  await page.selectOption('select[data-path=\'["render","resolution"]\']', '320×180');
+  await page.waitForFunction((g) => Number(document.getElementById('stats').dataset.generation) > g, generation6);
+  await page.waitForFunction(() => document.getElementById('stats').textContent.startsWith('320×180'));
+  await page.selectOption('select[data-path=\'["render","resolution"]\']', '640×360');
+  await page.waitForFunction(() => document.getElementById('stats').textContent.startsWith('640×360'));
+  await page.evaluate(() => { document.getElementById('error').hidden = true; });
+
+  // 7. Save downloads the PNG of the current image; Export the scene's YAML.
   const generationNow = (await stats(page)).generation;
   await waitRefined(page, generationNow);
   const [download] = await Promise.all([page.waitForEvent('download'), page.click('#save-png')]);
