@@ -31,10 +31,11 @@ struct RayCounters {
 };
 
 class Integrator {
-public:
+  public:
     virtual ~Integrator() = default;
     // Radiance arriving at the camera along `ray`. `samples` supplies this path's random numbers.
-    virtual Rgb radiance(const Scene& scene, const Ray& ray, SampleStream& samples, RayCounters& rays) const = 0;
+    virtual Rgb radiance(const Scene& scene, const Ray& ray, SampleStream& samples,
+                         RayCounters& rays) const = 0;
 };
 
 using IntegratorFactory = std::function<std::unique_ptr<Integrator>(const RenderSettings&)>;

@@ -7,7 +7,7 @@ namespace glint {
 // Ray casting: the first surface a camera ray meets, lit directly by every light, with hard shadows
 // from shadow rays; no reflected or refracted rays. Rays that miss see the background.
 class RaycastIntegrator final : public Integrator {
-public:
+  public:
     Rgb radiance(const Scene& scene, const Ray& ray, SampleStream& samples, RayCounters& rays) const override;
 };
 

@@ -17,16 +17,16 @@ struct BuildContext;
 
 // Light arriving at a surface point from one sampled point of a light.
 struct LightSample {
-    Vec3 wi;          // unit direction from the surface towards the light
-    Rgb radiance;     // arriving radiance (for a delta light, the irradiance-per-cosine I/r²)
-    Vec3 position;    // the point on the light, for the shadow ray
-    double pdf = 1;   // solid-angle density of wi; 1 for delta lights
-    bool delta = true;  // a point or directional light: no other way to hit it
+    Vec3 wi;                // unit direction from the surface towards the light
+    Rgb radiance;           // arriving radiance (for a delta light, the irradiance-per-cosine I/r²)
+    Vec3 position;          // the point on the light, for the shadow ray
+    double pdf = 1;         // solid-angle density of wi; 1 for delta lights
+    bool delta = true;      // a point or directional light: no other way to hit it
     bool infinite = false;  // at infinity: the shadow ray has no end point
 };
 
 class Light {
-public:
+  public:
     virtual ~Light() = default;
 
     // Samples light arriving at `at`; nullopt when this light sends none there (or is only ambient).

@@ -19,7 +19,8 @@ std::optional<LightSample> PointLight::sample(const Hit& at, Point2) const {
 
 std::unique_ptr<Light> PointLight::create(Params& params, const BuildContext&) {
     const Vec3 position = params.vec3("position");
-    const Rgb intensity = params.non_negative_color("intensity", Rgb(1.0)) * params.non_negative("scale", 1.0);
+    const Rgb intensity =
+        params.non_negative_color("intensity", Rgb(1.0)) * params.non_negative("scale", 1.0);
     return std::make_unique<PointLight>(position, intensity);
 }
 

@@ -21,13 +21,13 @@ struct BuildContext;
 
 struct BsdfSample {
     Vec3 wi;
-    Rgb f;             // BSDF value for (wo, wi)
-    double pdf = 0;    // solid-angle density of wi; for a delta lobe, the discrete probability
+    Rgb f;               // BSDF value for (wo, wi)
+    double pdf = 0;      // solid-angle density of wi; for a delta lobe, the discrete probability
     bool delta = false;  // a mirror or refraction direction: f and pdf are Dirac weights
 };
 
 class Material {
-public:
+  public:
     virtual ~Material() = default;
 
     virtual Rgb evaluate(const Hit& hit, const Vec3& wo, const Vec3& wi) const = 0;
@@ -50,6 +50,8 @@ struct MaterialEntry {
 const std::vector<MaterialEntry>& material_table();
 
 // n flipped, if needed, to the side of v.
-inline Vec3 face_forward(const Vec3& n, const Vec3& v) { return dot(n, v) < 0 ? -n : n; }
+inline Vec3 face_forward(const Vec3& n, const Vec3& v) {
+    return dot(n, v) < 0 ? -n : n;
+}
 
 }  // namespace glint

@@ -38,8 +38,9 @@ double Matte::pdf(const Hit& hit, const Vec3& wo, const Vec3& wi) const {
 std::unique_ptr<Material> Matte::create(Params& params, const BuildContext&) {
     const Rgb albedo = params.color("albedo", Rgb(0.8));
     if (albedo.r < 0 || albedo.g < 0 || albedo.b < 0 || albedo.max_component() > 1) {
-        params.fail("albedo", "matte albedo must lie in [0, 1] per channel (a surface cannot reflect more light than "
-                              "it receives)");
+        params.fail("albedo",
+                    "matte albedo must lie in [0, 1] per channel (a surface cannot reflect more light than "
+                    "it receives)");
     }
     return std::make_unique<Matte>(albedo);
 }

@@ -6,7 +6,7 @@ namespace glint {
 
 // Lambertian diffuse: f = ρ/π (errata to paper eq. 15), on both sides of the surface.
 class Matte final : public Material {
-public:
+  public:
     explicit Matte(const Rgb& albedo) : albedo_(albedo) {}
     Rgb evaluate(const Hit& hit, const Vec3& wo, const Vec3& wi) const override;
     std::optional<BsdfSample> sample(const Hit& hit, const Vec3& wo, Point2 u) const override;
@@ -15,7 +15,7 @@ public:
 
     static std::unique_ptr<Material> create(Params& params, const BuildContext& context);
 
-private:
+  private:
     Rgb albedo_;
 };
 

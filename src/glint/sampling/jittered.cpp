@@ -5,7 +5,8 @@
 namespace glint {
 
 JitteredSampler::JitteredSampler(std::uint32_t samples_per_pixel)
-    : grid_(static_cast<std::uint32_t>(std::ceil(std::sqrt(static_cast<double>(std::max(1u, samples_per_pixel)))))) {
+    : grid_(static_cast<std::uint32_t>(
+          std::ceil(std::sqrt(static_cast<double>(std::max(1u, samples_per_pixel)))))) {
     // Guard against sqrt rounding up a perfect square.
     while (grid_ > 1 && (grid_ - 1) * (grid_ - 1) >= samples_per_pixel) {
         --grid_;
@@ -16,7 +17,8 @@ Point2 JitteredSampler::sample_2d(const SampleKey& key, std::uint32_t dimension)
     const std::uint32_t n = grid_ * grid_;
     // Which cell sample i falls in is shuffled per pixel and per dimension, so that the film position
     // and the lens position of one sample are not correlated (pbrt's "padding" of 2-D patterns).
-    const auto scramble = static_cast<std::uint32_t>(hash_values(key.seed, key.pixel_x, key.pixel_y, dimension, 0x6a17u));
+    const auto scramble =
+        static_cast<std::uint32_t>(hash_values(key.seed, key.pixel_x, key.pixel_y, dimension, 0x6a17u));
     const std::uint32_t cell = permute(key.sample % n, n, scramble);
     const double jx = key.uniform(2 * dimension);
     const double jy = key.uniform(2 * dimension + 1);

@@ -25,7 +25,9 @@ struct Scene {
     Rgb background;
     Rgb ambient;  // the sum of the ambient lights' radiance
 
-    bool intersect(const Ray& ray, double t_max, Hit& hit) const { return accelerator->intersect(ray, t_max, hit); }
+    bool intersect(const Ray& ray, double t_max, Hit& hit) const {
+        return accelerator->intersect(ray, t_max, hit);
+    }
     bool occluded(const Ray& ray, double t_max) const { return accelerator->occluded(ray, t_max); }
     const Material& material(const Hit& hit) const { return *materials[shape_materials[hit.primitive]]; }
 };

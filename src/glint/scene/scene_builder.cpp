@@ -2,6 +2,7 @@
 // each mistake is reported at its position before anything is rendered.
 #include <map>
 
+#include "glint/geometry/instance.hpp"
 #include "glint/integrator/integrator.hpp"
 #include "glint/material/matte.hpp"
 #include "glint/sampling/sampler.hpp"
@@ -42,8 +43,8 @@ const Entry& lookup(const std::vector<Entry>& table, Params& params, const std::
 }
 
 // A name checked against a list, for command-line overrides and `render:` keys.
-std::string check_name(const std::string& value, const std::vector<std::string>& names, const std::string& what,
-                       const SourcePos& pos) {
+std::string check_name(const std::string& value, const std::vector<std::string>& names,
+                       const std::string& what, const SourcePos& pos) {
     for (const std::string& n : names) {
         if (n == value) {
             return value;
@@ -94,11 +95,12 @@ RenderSettings read_render_settings(const Node* node, const RenderOverrides& ove
             s.sampler = check_name(p.string("sampler"), sampler_names(), "sampler", p.pos_of("sampler"));
         }
         if (p.has("integrator")) {
-            s.integrator = check_name(p.string("integrator"), integrator_names(), "integrator", p.pos_of("integrator"));
+            s.integrator =
+                check_name(p.string("integrator"), integrator_names(), "integrator", p.pos_of("integrator"));
         }
         if (p.has("accelerator")) {
-            s.accelerator =
-                check_name(p.string("accelerator"), accelerator_names(), "accelerator", p.pos_of("accelerator"));
+            s.accelerator = check_name(p.string("accelerator"), accelerator_names(), "accelerator",
+                                       p.pos_of("accelerator"));
         }
         s.max_depth = static_cast<int>(p.positive_integer("max_depth", s.max_depth));
         const std::int64_t seed = p.integer("seed", static_cast<std::int64_t>(s.seed));
@@ -109,14 +111,21 @@ RenderSettings read_render_settings(const Node* node, const RenderOverrides& ove
         p.finish();
     }
     // Command-line values are checked by the command line; names are checked here, against the tables.
-    if (overrides.width) s.width = *overrides.width;
-    if (overrides.height) s.height = *overrides.height;
-    if (overrides.samples_per_pixel) s.samples_per_pixel = *overrides.samples_per_pixel;
-    if (overrides.seed) s.seed = *overrides.seed;
-    if (overrides.threads) s.threads = *overrides.threads;
-    if (overrides.max_depth) s.max_depth = *overrides.max_depth;
+    if (overrides.width)
+        s.width = *overrides.width;
+    if (overrides.height)
+        s.height = *overrides.height;
+    if (overrides.samples_per_pixel)
+        s.samples_per_pixel = *overrides.samples_per_pixel;
+    if (overrides.seed)
+        s.seed = *overrides.seed;
+    if (overrides.threads)
+        s.threads = *overrides.threads;
+    if (overrides.max_depth)
+        s.max_depth = *overrides.max_depth;
     const SourcePos command_line{SourceFile::from_text("command line", ""), 0, 0};
-    if (overrides.sampler) s.sampler = check_name(*overrides.sampler, sampler_names(), "sampler", command_line);
+    if (overrides.sampler)
+        s.sampler = check_name(*overrides.sampler, sampler_names(), "sampler", command_line);
     if (overrides.integrator) {
         s.integrator = check_name(*overrides.integrator, integrator_names(), "integrator", command_line);
     }
@@ -168,11 +177,12 @@ Scene build_scene(const SceneDesc& desc, const RenderOverrides& overrides) {
     };
     if (const Node* materials = top.node("materials")) {
         if (!materials->is_map()) {
-            throw SceneError(materials->pos, "materials must be a map from names to materials, not " +
-                                                 materials->describe());
+            throw SceneError(materials->pos,
+                             "materials must be a map from names to materials, not " + materials->describe());
         }
         for (size_t i = 0; i < materials->keys.size(); ++i) {
-            material_index[materials->keys[i]] = build_material(materials->items[i], "material '" + materials->keys[i] + "'");
+            material_index[materials->keys[i]] =
+                build_material(materials->items[i], "material '" + materials->keys[i] + "'");
         }
     }
     std::optional<std::uint32_t> default_material;  // grey matte, made only if some object needs it
@@ -216,6 +226,7 @@ Scene build_scene(const SceneDesc& desc, const RenderOverrides& overrides) {
             Params shape_params(objects->items[i], entry.name);
             shape_params.string("type");
             auto shape = entry.create(shape_params, context);
+            shape = apply_transform(shape_params, std::move(shape));  // `transform:`, any object
             const std::uint32_t material = material_for(shape_params);
             shape_params.finish();
             scene.shapes.push_back(std::move(shape));

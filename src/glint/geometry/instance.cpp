@@ -1,0 +1,156 @@
+// Instances: any object may carry `transform`, which places it by an affine map. Either one map,
+//   transform: {scale: 2 or [sx, sy, sz], rotate: {axis: [x, y, z], angle: degrees}, translate: [x, y, z]}
+// applied as scale, then rotate, then translate whatever the order of the keys (each key optional), or
+//   transform: {matrix: [12 or 16 numbers]}   (row-major; a 16-number matrix must end in 0, 0, 0, 1)
+// or a list of such maps, applied in list order: [{rotate: …}, {translate: …}, {scale: …}].
+// An ellipsoid is a sphere with scale [a, b, c].
+#include "glint/geometry/instance.hpp"
+
+#include "glint/scene/params.hpp"
+
+namespace glint {
+
+bool Instance::intersect(const Ray& ray, double t_max, Hit& hit) const {
+    Hit local;
+    if (!shape_->intersect(to_object(ray), t_max, local)) {
+        return false;
+    }
+    hit = local;
+    hit.point = to_world_.point(local.point);
+    hit.normal = normalize(to_world_.normal(local.normal));
+    hit.shading_normal = normalize(to_world_.normal(local.shading_normal));
+    // The object-space error grows by at most the row sums of |M| in each axis, and transforming the
+    // point rounds relative to the terms summed.
+    const Vec3 rows = to_world_.row_abs_sums();
+    hit.error =
+        max_component(rows) * local.error +
+        kHitRelativeError * (max_component(rows) * max_component(abs(local.point)) +
+                             max_component(abs(to_world_.translation())) + max_component(abs(hit.point)));
+    return true;
+}
+
+bool Instance::occluded(const Ray& ray, double t_max) const {
+    return shape_->occluded(to_object(ray), t_max);
+}
+
+double Instance::area() const {
+    const std::optional<double> s = to_world_.uniform_scale();
+    return s ? *s * *s * shape_->area() : 0;
+}
+
+std::optional<ShapeSample> Instance::sample_area(Point2 u) const {
+    const double world_area = area();
+    if (!(world_area > 0)) {
+        return std::nullopt;
+    }
+    std::optional<ShapeSample> s = shape_->sample_area(u);
+    if (!s) {
+        return std::nullopt;
+    }
+    s->point = to_world_.point(s->point);
+    s->normal = normalize(to_world_.normal(s->normal));
+    s->pdf_area = 1 / world_area;
+    return s;
+}
+
+namespace {
+
+Transform read_matrix(Params& step) {
+    const Node* node = step.node("matrix");
+    const std::string what = step.what() + ".matrix";
+    if (!node->is_sequence() || (node->items.size() != 12 && node->items.size() != 16)) {
+        throw SceneError(
+            node->pos,
+            what + " must be a list of 12 or 16 numbers (3 or 4 rows of 4, row by row), not " +
+                (node->is_sequence() ? std::to_string(node->items.size()) + " numbers" : node->describe()));
+    }
+    Transform::Matrix m{};
+    for (int i = 0; i < 12; ++i) {
+        m[i / 4][i % 4] = node_number(node->items[i], what + "[" + std::to_string(i) + "]");
+    }
+    if (node->items.size() == 16) {
+        const double last_row[4] = {0, 0, 0, 1};
+        for (int j = 0; j < 4; ++j) {
+            const Node& item = node->items[12 + j];
+            if (node_number(item, what + "[" + std::to_string(12 + j) + "]") != last_row[j]) {
+                throw SceneError(item.pos, what +
+                                               " must be affine: its last row must be 0, 0, 0, 1 (projective "
+                                               "transforms are not supported)");
+            }
+        }
+    }
+    const std::optional<Transform> t = Transform::from_matrix(m);
+    if (!t) {
+        step.fail("matrix",
+                  what + " cannot be inverted (it flattens space, so the object would have no normals)");
+    }
+    return *t;
+}
+
+// One map: a matrix, or scale then rotate then translate.
+Transform read_step(const Node& node, const std::string& what) {
+    Params step(node, what);
+    Transform t;
+    if (step.has("matrix")) {
+        for (const char* other : {"scale", "rotate", "translate"}) {
+            if (step.has(other)) {
+                step.fail(other, what + " has both matrix and " + other +
+                                     ": give them as separate steps of a list, in the order they apply");
+            }
+        }
+        t = read_matrix(step);
+    }
+    if (const Node* scale = step.node("scale")) {
+        const Vec3 s = scale->is_scalar() ? Vec3(1, 1, 1) * node_number(*scale, what + ".scale")
+                                          : node_vec3(*scale, what + ".scale");
+        const std::optional<Transform> scaling = Transform::scale(s);
+        if (!scaling) {
+            throw SceneError(scale->pos, what +
+                                             ".scale must not be zero in any axis (a flattened object has "
+                                             "no normals); negative values mirror");
+        }
+        t = t.then(*scaling);
+    }
+    if (step.has("rotate")) {
+        Params rotate = step.child("rotate");
+        const Vec3 axis = rotate.direction("axis");
+        const double angle = rotate.number("angle");
+        rotate.finish();
+        t = t.then(Transform::rotate(axis, angle));
+    }
+    if (step.has("translate")) {
+        t = t.then(Transform::translate(step.vec3("translate")));
+    }
+    step.finish();
+    return t;
+}
+
+}  // namespace
+
+std::unique_ptr<Shape> apply_transform(Params& object, std::unique_ptr<Shape> shape) {
+    const Node* node = object.node("transform");
+    if (!node) {
+        return shape;
+    }
+    const std::string what = object.what() + ".transform";
+    Transform t;
+    if (node->is_sequence()) {
+        for (size_t i = 0; i < node->items.size(); ++i) {
+            t = t.then(read_step(node->items[i], what + "[" + std::to_string(i) + "]"));
+        }
+    } else if (node->is_map()) {
+        t = read_step(*node, what);
+    } else {
+        throw SceneError(node->pos, what +
+                                        " must be a map {scale, rotate, translate} or {matrix}, or a list of "
+                                        "such maps, not " +
+                                        node->describe());
+    }
+    // Steps that are each invertible can still compose to a transform too close to singular.
+    if (!Transform::from_matrix(t.matrix())) {
+        throw SceneError(node->pos, what + " cannot be inverted (it flattens space)");
+    }
+    return std::make_unique<Instance>(std::move(shape), t);
+}
+
+}  // namespace glint

@@ -1,0 +1,32 @@
+#pragma once
+
+#include "glint/geometry/shape.hpp"
+
+namespace glint {
+
+// The parallelogram {corner + a·edge1 + b·edge2 : a, b in [0, 1]}. One-sided geometry, two-sided for
+// shading: the normal is edge1 × edge2 normalised (right-hand rule).
+class Rectangle final : public Shape {
+  public:
+    // The edges must not be parallel or zero (create() reports that as a scene error).
+    Rectangle(const Vec3& corner, const Vec3& edge1, const Vec3& edge2);
+    Bounds3 bounds() const override;
+    bool intersect(const Ray& ray, double t_max, Hit& hit) const override;
+    bool occluded(const Ray& ray, double t_max) const override;
+    double area() const override { return area_; }
+    std::optional<ShapeSample> sample_area(Point2 u) const override;
+
+    static std::unique_ptr<Shape> create(Params& params, const BuildContext& context);
+
+  private:
+    // t of the hit within (0, t_max) and inside the parallelogram, or kInf; `ab` are its (a, b).
+    double solve(const Ray& ray, double t_max, Vec3& point, Point2& ab) const;
+
+    Vec3 corner_, edge1_, edge2_;
+    Vec3 normal_;  // unit
+    // Dual vectors: for q in the plane, q = a·edge1 + b·edge2 with a = q·dual1, b = q·dual2.
+    Vec3 dual1_, dual2_;
+    double area_;
+};
+
+}  // namespace glint
