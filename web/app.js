@@ -281,10 +281,16 @@ function lensCameraType() {
   return state.cameras.find((name) => /lens|thin|dof|realistic/i.test(name)) || null;
 }
 
+// Sets an aperture or focus key, first turning a pinhole into the lens camera (with a small aperture,
+// so that choosing a focus shows some depth of field).
+const kFirstLensRadius = 0.05;
 function cameraEdit(key, value) {
   const edits = [{path: ['camera', key], value}];
   const lens = lensCameraType();
-  if (lens) edits.push({path: ['camera', 'type'], value: lens});
+  if (lens) {
+    edits.push({path: ['camera', 'type'], value: lens});
+    if (key !== 'lens_radius') edits.push({path: ['camera', 'lens_radius'], value: kFirstLensRadius});
+  }
   edit(...edits);
 }
 
