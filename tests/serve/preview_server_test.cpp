@@ -384,6 +384,46 @@ TEST_F(PreviewServerTest, FiftyClientsAtOnceAreAllServed) {
     EXPECT_EQ(res->status, 200);
 }
 
+// Event streams hold a thread each while open; past the cap they are refused, and ordinary requests
+// are still answered at once.
+TEST_F(PreviewServerTest, EventStreamsCannotStarveTheServer) {
+    std::atomic<bool> release{false};
+    std::atomic<int> streaming{0};
+    std::vector<std::thread> watchers;
+    for (int i = 0; i < PreviewServer::kMaxEventStreams; ++i) {
+        watchers.emplace_back([&] {
+            httplib::Client c = client();
+            bool counted = false;
+            c.Get("/api/events", [&](const char*, size_t) {
+                if (!counted) {
+                    counted = true;
+                    ++streaming;
+                }
+                return !release.load();
+            });
+        });
+    }
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+    while (streaming.load() < PreviewServer::kMaxEventStreams &&
+           std::chrono::steady_clock::now() < deadline) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    EXPECT_EQ(streaming.load(), PreviewServer::kMaxEventStreams);
+    auto refused = client().Get("/api/events");
+    ASSERT_TRUE(refused);
+    EXPECT_EQ(refused->status, 503);
+    const auto start = std::chrono::steady_clock::now();
+    auto scene = client().Get("/api/scene");
+    ASSERT_TRUE(scene);
+    EXPECT_EQ(scene->status, 200);
+    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(1));
+    release = true;
+    server_->stop();  // wakes the streams, which end
+    for (auto& t : watchers) {
+        t.join();
+    }
+}
+
 TEST_F(PreviewServerTest, StopEndsOpenEventStreams) {
     std::vector<std::thread> watchers;
     std::atomic<int> ended{0};
