@@ -313,6 +313,9 @@ function buildRender() {
     const [w, h] = v.split('×').map(Number);
     edit({path: ['render', 'width'], value: w}, {path: ['render', 'height'], value: h});
   })]));
+  box.append(field('size', [
+    numberInput(['render', 'width'], state.width, {min: 1, step: 1}), el('span', {text: '×'}),
+    numberInput(['render', 'height'], state.height, {min: 1, step: 1})]));
   const shown = new Set(['integrator', 'sampler', 'samples', 'max_depth', 'width', 'height']);
   for (const [key, value] of Object.entries(render)) {
     if (!shown.has(key)) box.append(field(key, valueControl(['render', key], value)));
@@ -391,7 +394,9 @@ function updateControls() {
       continue;
     }
     let value = valueAt(path);
-    if (value === undefined && path[0] === 'render') value = state.settings[path[1] === 'max_depth' ? 'max_depth' : path[1]];
+    if (value === undefined && path[0] === 'render') {
+      value = path[1] === 'width' ? state.width : path[1] === 'height' ? state.height : state.settings[path[1]];
+    }
     if (value === undefined) continue;
     if (input.dataset.kind === 'colour') input.value = linearToHex(value);
     else if (input.type === 'checkbox') input.checked = value;
