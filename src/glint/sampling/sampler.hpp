@@ -20,7 +20,7 @@
 namespace glint {
 
 class Sampler {
-public:
+  public:
     virtual ~Sampler() = default;
 
     // The number of samples per pixel this pattern takes (a pattern may round the request: jittered
@@ -38,14 +38,14 @@ public:
 
 // The samples one camera path draws, in order: a thin cursor over (sampler, key, dimension).
 class SampleStream {
-public:
+  public:
     SampleStream(const Sampler& sampler, const SampleKey& key, std::uint32_t first_dimension)
         : sampler_(&sampler), key_(key), dimension_(first_dimension) {}
     Point2 next_2d() { return sampler_->sample_2d(key_, dimension_++); }
     double next_1d() { return sampler_->sample_1d(key_, dimension_++); }
     const SampleKey& key() const { return key_; }
 
-private:
+  private:
     const Sampler* sampler_;
     SampleKey key_;
     std::uint32_t dimension_;
