@@ -41,8 +41,11 @@ void draw_panel(Canvas& canvas, double left, double top, double width, double he
                 lo = std::min(lo, r), hi = std::max(hi, r);
         }
     }
-    const int e_lo = static_cast<int>(std::floor(std::log10(lo))),
-              e_hi = static_cast<int>(std::ceil(std::log10(hi)));
+    if (!(hi > 0)) {
+        lo = 0.1, hi = 1;  // no positive error to show: an empty decade
+    }
+    const int e_lo = static_cast<int>(std::floor(std::log10(lo)));
+    const int e_hi = std::max(e_lo + 1, static_cast<int>(std::ceil(std::log10(hi))));
     const double lx_max = std::log(static_cast<double>(std::max(4u, max_count)));
     auto X = [&](double n) { return left + std::log(n) / lx_max * width; };
     auto Y = [&](double r) { return top + (e_hi - std::log10(r)) / (e_hi - e_lo) * height; };

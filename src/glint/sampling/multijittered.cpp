@@ -10,7 +10,7 @@ namespace glint {
 MultiJitteredSampler::MultiJitteredSampler(std::uint32_t samples_per_pixel) {
     const std::uint32_t n = std::max(1u, samples_per_pixel);
     std::uint32_t m = square_grid_size(n);
-    while (m * m > n || n % m != 0) {
+    while (std::uint64_t{m} * m > n || n % m != 0) {
         --m;
     }
     columns_ = m;
