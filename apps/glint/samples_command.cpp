@@ -23,6 +23,7 @@
 #include "commands.hpp"
 #include "glint/core/vec.hpp"
 #include "glint/image/image_io.hpp"
+#include "glint/render/settings.hpp"
 #include "glint/sampling/convergence.hpp"
 #include "glint/sampling/multijittered.hpp"
 #include "glint/sampling/pattern_stats.hpp"
@@ -47,7 +48,7 @@ struct SamplesOptions {
     std::string pattern;
     std::uint32_t count = 16;
     std::string pixel = "0,0";
-    std::uint64_t seed = 0;
+    std::uint64_t seed = glint::RenderSettings{}.seed;  // the render's default, so the points are its points
     std::uint32_t dimension = 0;
     std::string output;
     std::string warp;
@@ -342,7 +343,9 @@ void add_samples_command(CLI::App& app) {
                     "Number of points requested (regular and jittered round up to a square)")
         ->check(CLI::Range(1u, 1u << 20));
     cmd->add_option("--pixel", options->pixel, "The pixel X,Y whose points to show (default 0,0)");
-    cmd->add_option("--seed", options->seed, "The render seed (default 0)");
+    cmd->add_option(
+        "--seed", options->seed,
+        "The render seed (default: the render's, " + std::to_string(glint::RenderSettings{}.seed) + ")");
     cmd->add_option("--dimension", options->dimension,
                     "The 2-D dimension: 0 film, 1 lens, 2… integrator (default 0)");
     cmd->add_option("-o,--output", options->output,
