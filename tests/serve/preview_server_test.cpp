@@ -5,6 +5,8 @@
 
 #include <arpa/inet.h>
 #include <gtest/gtest.h>
+
+#include "glint/sampling/sampler.hpp"
 #include <httplib.h>
 #include <netinet/in.h>
 #include <sys/socket.h>
@@ -152,7 +154,12 @@ TEST_F(PreviewServerTest, SceneIsSentAsJsonWithTheTablesNames) {
     EXPECT_EQ(state["scene"]["render"]["width"], 64);
     EXPECT_EQ(state["scene"]["camera"]["eye"], json::parse("[0, 1.6, 7]"));
     EXPECT_EQ(state["scene"]["materials"]["red"]["type"], "matte");
-    EXPECT_EQ(state["samplers"][0]["name"], "random");
+    // The page's menus are the sampler table, in its order.
+    const std::vector<std::string> names = glint::sampler_names();
+    ASSERT_EQ(state["samplers"].size(), names.size());
+    for (size_t i = 0; i < names.size(); ++i) {
+        EXPECT_EQ(state["samplers"][i]["name"], names[i]);
+    }
     EXPECT_FALSE(state["integrators"].empty());
     EXPECT_EQ(state["width"], 64);
 }

@@ -30,7 +30,8 @@ class Sampler {
     // Point `key.sample` of the pattern for pixel (key.pixel_x, key.pixel_y) in `dimension`; in [0,1)².
     virtual Point2 sample_2d(const SampleKey& key, std::uint32_t dimension) const = 0;
 
-    // A 1-D sample; by default the x of the 2-D pattern, which is stratified for every pattern here.
+    // A 1-D sample; by default the x of the 2-D pattern, which is stratified into n intervals for every
+    // pattern but random (regular and jittered, whose x has only √n strata, override this).
     virtual double sample_1d(const SampleKey& key, std::uint32_t dimension) const {
         return sample_2d(key, dimension).x;
     }
