@@ -60,6 +60,14 @@ TEST(CheckerTexture, AFloorOnACellBoundaryIsNotSpeckled) {
     EXPECT_EQ(checker.evaluate(hit_at({0.5, 1e-17, 0.5})), checker.evaluate(hit_at({0.5, -1e-17, 0.5})));
 }
 
+TEST(CheckerTexture, FarPointsOfAnInfinitePlaneStillGetACell) {
+    // Beyond 2⁵³ every double is an even integer: cell parity 0, and no integer overflow on the way.
+    const CheckerTexture checker(constant(kEven), constant(kOdd), 1.0, CheckerTexture::Space::Solid);
+    EXPECT_EQ(checker.evaluate(hit_at({1e30, 0.5, -1e25})), kEven);
+    EXPECT_EQ(checker.evaluate(hit_at({1e30, 1.5, -1e25})), kOdd);
+    EXPECT_EQ(checker.evaluate(hit_at({-3.5, 0.5, 0.5})), kEven);  // cell −4: even
+}
+
 // A 2 × 2 image: top row red, green; bottom row blue, white.
 Image two_by_two() {
     Image image(2, 2);
