@@ -1,22 +1,26 @@
 #pragma once
 
+#include <memory>
+
 #include "glint/material/material.hpp"
+#include "glint/texture/texture.hpp"
 
 namespace glint {
 
 // Lambertian diffuse: f = ρ/π (errata to paper eq. 15), on both sides of the surface.
 class Matte final : public Material {
   public:
-    explicit Matte(const Rgb& albedo) : albedo_(albedo) {}
+    explicit Matte(std::shared_ptr<const Texture> albedo) : albedo_(std::move(albedo)) {}
+    explicit Matte(const Rgb& albedo) : Matte(std::make_shared<ConstantTexture>(albedo)) {}
     Rgb evaluate(const Hit& hit, const Vec3& wo, const Vec3& wi) const override;
     std::optional<BsdfSample> sample(const Hit& hit, const Vec3& wo, Point2 u) const override;
     double pdf(const Hit& hit, const Vec3& wo, const Vec3& wi) const override;
-    Rgb ambient_reflectance(const Hit&) const override { return albedo_; }
+    Rgb ambient_reflectance(const Hit& hit) const override { return albedo_->evaluate(hit); }
 
     static std::unique_ptr<Material> create(Params& params, const BuildContext& context);
 
   private:
-    Rgb albedo_;
+    std::shared_ptr<const Texture> albedo_;
 };
 
 }  // namespace glint

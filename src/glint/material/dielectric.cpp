@@ -1,0 +1,45 @@
+// Dielectric {type: dielectric, ior, absorption}:
+//   ior         refractive index inside, > 0 (≠ 1 for a visible interface), default 1.5 (glass; water
+//               1.333, diamond 2.417); the outside is 1;
+//   absorption  σ per scene unit, colour ≥ 0, default 0: light travelling d inside keeps exp(−σ d).
+#include "glint/material/dielectric.hpp"
+
+#include "glint/material/fresnel.hpp"
+#include "glint/scene/params.hpp"
+
+namespace glint {
+
+std::optional<BsdfSample> Dielectric::sample(const Hit& hit, const Vec3& wo, Point2 u) const {
+    const double cos_o = dot(hit.shading_normal, wo);
+    if (cos_o == 0) {
+        return std::nullopt;
+    }
+    const bool outside = cos_o > 0;          // wo on the side the normal points to
+    const double n1 = outside ? 1.0 : ior_;  // index on wo's side
+    const double n2 = outside ? ior_ : 1.0;  // index on the other side
+    const Vec3 n = outside ? hit.shading_normal : -hit.shading_normal;
+    const double c1 = std::abs(cos_o);
+    const double reflectance = fresnel_dielectric(c1, n1, n2);
+    const std::optional<Vec3> refracted = refract(-wo, n, n1, n2);
+    if (u.x < reflectance || !refracted) {
+        const Vec3 wi = 2 * c1 * n - wo;
+        return BsdfSample{wi, Rgb(reflectance / c1), reflectance, true};
+    }
+    const Vec3 wi = normalize(*refracted);
+    const double cos_i = std::abs(dot(hit.shading_normal, wi));
+    if (cos_i <= 0) {
+        return std::nullopt;
+    }
+    const double transmittance = 1 - reflectance;
+    return BsdfSample{wi, Rgb(transmittance * sqr(n1 / n2) / cos_i), transmittance, true};
+}
+
+std::unique_ptr<Material> Dielectric::create(Params& params, const BuildContext&) {
+    const double ior = params.positive("ior", 1.5);
+    if (ior > 10) {
+        params.fail("ior", "dielectric ior must be at most 10 (glass 1.5, water 1.333, diamond 2.417)");
+    }
+    return std::make_unique<Dielectric>(ior, params.non_negative_color("absorption", Rgb()));
+}
+
+}  // namespace glint

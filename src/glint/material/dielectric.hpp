@@ -1,0 +1,34 @@
+#pragma once
+
+#include <memory>
+
+#include "glint/material/material.hpp"
+
+namespace glint {
+
+// Smooth dielectric (glass, water, diamond) of index `ior` inside and 1 outside (paper §VIII with the
+// errata). hit.normal points outside; wo may be on either side. sample() reflects with probability
+// F, the exact dielectric Fresnel reflectance, and otherwise refracts by Snell's law (η = n₁/n₂ from
+// wo's side to the other); under total internal reflection F = 1. Both lobes are delta:
+//   reflection:    f = F / |cos θi|,                  pdf = F      (path weight 1)
+//   transmission:  f = (1 − F) (n₁/n₂)² / |cos θi|,   pdf = 1 − F  (path weight (n₁/n₂)²)
+// glint transports radiance, and radiance changes across an interface: L is proportional to n² for
+// the same flux, so a camera path crossing from index n₁ into n₂ carries (n₁/n₂)². The factors
+// cancel on a path that enters and leaves the same medium.
+// Inside, light is absorbed by Beer's law with coefficient `absorption` σ (see Material::absorption).
+class Dielectric final : public Material {
+  public:
+    Dielectric(double ior, const Rgb& absorption) : ior_(ior), absorption_(absorption) {}
+    Rgb evaluate(const Hit&, const Vec3&, const Vec3&) const override { return {}; }
+    std::optional<BsdfSample> sample(const Hit& hit, const Vec3& wo, Point2 u) const override;
+    double pdf(const Hit&, const Vec3&, const Vec3&) const override { return 0; }
+    Rgb absorption() const override { return absorption_; }
+
+    static std::unique_ptr<Material> create(Params& params, const BuildContext& context);
+
+  private:
+    double ior_;
+    Rgb absorption_;
+};
+
+}  // namespace glint

@@ -1,0 +1,38 @@
+#pragma once
+
+#include <memory>
+
+#include "glint/material/material.hpp"
+#include "glint/texture/texture.hpp"
+
+namespace glint {
+
+// Rough metal (glossy reflector), two-sided: a GGX (Trowbridge–Reitz) microfacet BRDF,
+//   f = F(wo·h) D(h) G(wo, wi) / (4 cos θo cos θi),  h = (wo + wi)/‖wo + wi‖,
+// with the height-correlated Smith shadowing G = 1/(1 + Λ(wo) + Λ(wi)) and Schlick's Fresnel with the
+// metal's colour as the reflectance at normal incidence F₀. Width α = roughness². Sampled by the
+// distribution of visible normals (Heitz 2018), pdf = G₁(wo) D(h) / (4 cos θo); a sampled direction
+// below the surface is rejected (sample() returns nullopt), so the sampling density is exactly pdf().
+// Below roughness 0.03 (α < 10⁻³) the lobe is a perfect mirror of reflectance F(θo): a delta lobe.
+// Single scattering only: very rough metal loses the light that bounces between microfacets.
+class Metal final : public Material {
+  public:
+    Metal(std::shared_ptr<const Texture> reflectance, double roughness)
+        : reflectance_(std::move(reflectance)), alpha_(roughness * roughness) {}
+    Rgb evaluate(const Hit& hit, const Vec3& wo, const Vec3& wi) const override;
+    std::optional<BsdfSample> sample(const Hit& hit, const Vec3& wo, Point2 u) const override;
+    double pdf(const Hit& hit, const Vec3& wo, const Vec3& wi) const override;
+    bool is_mirror() const { return alpha_ < kMinAlpha; }
+
+    static std::unique_ptr<Material> create(Params& params, const BuildContext& context);
+
+  private:
+    static constexpr double kMinAlpha = 1e-3;
+    double distribution(double cos_h) const;  // D(h)
+    double lambda(double cos_theta) const;    // Smith Λ
+
+    std::shared_ptr<const Texture> reflectance_;
+    double alpha_;
+};
+
+}  // namespace glint

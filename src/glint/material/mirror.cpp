@@ -1,0 +1,20 @@
+// Mirror {type: mirror, reflectance}: reflectance kr, colour or texture in [0, 1], default 1.
+#include "glint/material/mirror.hpp"
+
+#include "glint/scene/params.hpp"
+
+namespace glint {
+
+std::optional<BsdfSample> Mirror::sample(const Hit& hit, const Vec3& wo, Point2) const {
+    const double cos_theta = std::abs(dot(hit.shading_normal, wo));
+    if (cos_theta <= 0) {
+        return std::nullopt;
+    }
+    return BsdfSample{mirror_direction(hit, wo), reflectance_->evaluate(hit) / cos_theta, 1.0, true};
+}
+
+std::unique_ptr<Material> Mirror::create(Params& params, const BuildContext& context) {
+    return std::make_unique<Mirror>(read_reflectance(params, "reflectance", Rgb(1.0), context));
+}
+
+}  // namespace glint

@@ -1,0 +1,71 @@
+// Plastic {type: plastic, diffuse, ior}:
+//   diffuse  ρ of the base, colour or texture in [0, 1], default 0.5;
+//   ior      refractive index of the coat, > 1, default 1.5.
+#include "glint/material/plastic.hpp"
+
+#include "glint/core/frame.hpp"
+#include "glint/material/fresnel.hpp"
+#include "glint/material/mirror.hpp"
+#include "glint/scene/params.hpp"
+
+namespace glint {
+
+double Plastic::coat_reflectance(const Hit& hit, const Vec3& w) const {
+    return fresnel_dielectric(std::abs(dot(hit.shading_normal, w)), 1.0, ior_);
+}
+
+double Plastic::coat_probability(const Hit& hit, const Vec3& wo) const {
+    const double f = coat_reflectance(hit, wo);
+    const Rgb rho = diffuse_->evaluate(hit);
+    const double base = (1 - f) * (rho.r + rho.g + rho.b) / 3;
+    return f + base > 0 ? f / (f + base) : 1;
+}
+
+Rgb Plastic::evaluate(const Hit& hit, const Vec3& wo, const Vec3& wi) const {
+    if (!same_hemisphere(hit, wo, wi)) {
+        return {};
+    }
+    return diffuse_->evaluate(hit) *
+           (kInvPi * (1 - coat_reflectance(hit, wi)) * (1 - coat_reflectance(hit, wo)));
+}
+
+double Plastic::pdf(const Hit& hit, const Vec3& wo, const Vec3& wi) const {
+    if (!same_hemisphere(hit, wo, wi)) {
+        return 0;
+    }
+    return (1 - coat_probability(hit, wo)) * std::abs(dot(hit.shading_normal, wi)) * kInvPi;
+}
+
+std::optional<BsdfSample> Plastic::sample(const Hit& hit, const Vec3& wo, Point2 u) const {
+    const double cos_o = std::abs(dot(hit.shading_normal, wo));
+    if (cos_o <= 0) {
+        return std::nullopt;
+    }
+    const double p = coat_probability(hit, wo);
+    if (u.x < p) {
+        return BsdfSample{mirror_direction(hit, wo), Rgb(coat_reflectance(hit, wo) / cos_o), p, true};
+    }
+    const Point2 v{(u.x - p) / (1 - p), u.y};
+    const Vec3 local = sample_cosine_hemisphere(v);
+    if (local.z <= 0) {
+        return std::nullopt;
+    }
+    const Vec3 wi = Frame::from_normal(face_forward(hit.shading_normal, wo)).to_world(local);
+    return BsdfSample{wi, evaluate(hit, wo, wi), (1 - p) * local.z * kInvPi, false};
+}
+
+Rgb Plastic::ambient_reflectance(const Hit& hit) const {
+    const double r0 = fresnel_r0(1.0, ior_);
+    return Rgb(r0) + sqr(1 - r0) * diffuse_->evaluate(hit);
+}
+
+std::unique_ptr<Material> Plastic::create(Params& params, const BuildContext& context) {
+    auto diffuse = read_reflectance(params, "diffuse", Rgb(0.5), context);
+    const double ior = params.number("ior", 1.5);
+    if (!(ior > 1) || ior > 10) {
+        params.fail("ior", "plastic ior must lie in (1, 10]; about 1.5 for plastics");
+    }
+    return std::make_unique<Plastic>(std::move(diffuse), ior);
+}
+
+}  // namespace glint

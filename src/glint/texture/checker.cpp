@@ -1,0 +1,39 @@
+// Checker {type: checker, scale, even, odd, space}:
+//   space  `uv` (default) or `solid`;
+//   scale  checks per unit (> 0): default 10 for uv (10 × 10 checks over the surface), 1 for solid;
+//   even, odd  colours or textures, default 0.8 and 0.2.
+#include "glint/texture/checker.hpp"
+
+#include <cmath>
+
+#include "glint/scene/params.hpp"
+
+namespace glint {
+
+namespace {
+// Cell index along one axis. The 1e-9 shift keeps surfaces that lie exactly on a cell boundary (the
+// floor y = 0 under a solid checker) in one cell, instead of speckled by the sign of rounding errors.
+long long cell(double x) {
+    return static_cast<long long>(std::floor(x + 1e-9));
+}
+}  // namespace
+
+Rgb CheckerTexture::evaluate(const Hit& hit) const {
+    long long sum = 0;
+    if (space_ == Space::Uv) {
+        sum = cell(hit.uv.x * scale_) + cell(hit.uv.y * scale_);
+    } else {
+        sum = cell(hit.point.x * scale_) + cell(hit.point.y * scale_) + cell(hit.point.z * scale_);
+    }
+    return (sum & 1) == 0 ? even_->evaluate(hit) : odd_->evaluate(hit);
+}
+
+std::shared_ptr<const Texture> CheckerTexture::create(Params& params, const BuildContext& context) {
+    const Space space = params.choice("space", {"uv", "solid"}, "uv") == "uv" ? Space::Uv : Space::Solid;
+    const double scale = params.positive("scale", space == Space::Uv ? 10.0 : 1.0);
+    auto even = read_texture(params, "even", Rgb(0.8), context);
+    auto odd = read_texture(params, "odd", Rgb(0.2), context);
+    return std::make_shared<CheckerTexture>(std::move(even), std::move(odd), scale, space);
+}
+
+}  // namespace glint
