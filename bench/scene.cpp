@@ -22,7 +22,8 @@ void BM_DefaultScene(benchmark::State& state) {
         rays += stats.rays.total();
         benchmark::DoNotOptimize(film.pixel(0, 0));
     }
-    state.counters["Mrays/s"] = benchmark::Counter(static_cast<double>(rays) * 1e-6, benchmark::Counter::kIsRate);
+    state.counters["Mrays/s"] =
+        benchmark::Counter(static_cast<double>(rays) * 1e-6, benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_DefaultScene)->Unit(benchmark::kMillisecond)->UseRealTime();
 

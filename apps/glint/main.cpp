@@ -11,6 +11,7 @@
 #include <optional>
 #include <string>
 
+#include "commands.hpp"
 #include "glint/image/image_io.hpp"
 #include "glint/render/render.hpp"
 #include "glint/scene/scene.hpp"
@@ -181,6 +182,8 @@ int main(int argc, char** argv) {
     render->add_option("--seed", options.seed,
                        "Random seed: the same seed gives the same image, bit for bit");
     render->add_flag("-q,--quiet", options.quiet, "No progress bar and no summary");
+    add_samples_command(app);
+    add_serve_command(app);
 
     try {
         app.parse(argc, argv);
@@ -190,6 +193,8 @@ int main(int argc, char** argv) {
         return app.exit(e);
     } catch (const CLI::CallForVersion& e) {
         return app.exit(e);
+    } catch (const CLI::RuntimeError& e) {  // a subcommand's callback failed; it printed why
+        return e.get_exit_code();
     } catch (const CLI::ParseError& e) {
         app.exit(e);
         return kExitBadInput;

@@ -24,8 +24,8 @@ CameraBasis camera_basis(const Vec3& eye, const Vec3& look_at, const Vec3& up) {
     return b;
 }
 
-ViewParams read_view_params(Params& params, FilmSize film) {
-    ViewParams view;
+ViewFrame read_view_frame(Params& params) {
+    ViewFrame view;
     view.eye = params.vec3("eye", {0, 0, 5});
     view.look_at = params.vec3("look_at", {0, 0, 0});
     if (length_squared(view.eye - view.look_at) == 0) {
@@ -35,9 +35,19 @@ ViewParams read_view_params(Params& params, FilmSize film) {
     const Vec3 up = params.direction("up", {0, 1, 0});
     view.basis = camera_basis(view.eye, view.look_at, up);
     if (view.basis.up_was_degenerate && up_given) {
-        params.fail("up", "camera up is parallel to the view direction, so it sets no roll; choose an up across "
-                          "the view (or leave it out for the default)");
+        params.fail("up",
+                    "camera up is parallel to the view direction, so it sets no roll; choose an up across "
+                    "the view (or leave it out for the default)");
     }
+    return view;
+}
+
+ViewParams read_view_params(Params& params, FilmSize film) {
+    const ViewFrame frame = read_view_frame(params);
+    ViewParams view;
+    view.eye = frame.eye;
+    view.look_at = frame.look_at;
+    view.basis = frame.basis;
     const bool has_fov = params.has("fov");
     const bool has_distance = params.has("view_distance");
     if (has_fov && has_distance) {
@@ -50,12 +60,20 @@ ViewParams read_view_params(Params& params, FilmSize film) {
     } else {
         const double fov = params.number("fov", 40.0);
         if (!(fov > 0 && fov < 180)) {
-            params.fail("fov", "camera fov is the vertical field of view in degrees: between 0 and 180, exclusive");
+            params.fail("fov",
+                        "camera fov is the vertical field of view in degrees: between 0 and 180, exclusive");
         }
         // The view plane at distance d shows height/2 pixels above the centre: tan(fov/2) = (h/2)/d.
         view.view_distance = 0.5 * film.height / std::tan(radians(fov) / 2);
     }
     return view;
+}
+
+Vec3 view_plane_direction(const ViewParams& view, FilmSize size, Point2 film) {
+    const double x = view.pixel_size * (film.x - 0.5 * size.width);
+    const double y = view.pixel_size * (0.5 * size.height - film.y);
+    const CameraBasis& b = view.basis;
+    return x * b.u + y * b.v - view.view_distance * b.w;
 }
 
 }  // namespace glint

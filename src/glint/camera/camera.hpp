@@ -14,12 +14,22 @@ class Params;
 struct BuildContext;
 
 class Camera {
-public:
+  public:
     virtual ~Camera() = default;
     // `film` is in pixels: x right from the left edge, y down from the top edge, pixel (i, j) covering
     // [i, i+1) × [j, j+1). `lens` is a point of the unit square, for cameras with an aperture.
+    // A film point the camera sees nothing through (outside a fisheye's image circle) gets a ray
+    // whose direction is the zero vector: see sees_scene().
     virtual Ray generate_ray(Point2 film, Point2 lens) const = 0;
 };
+
+// Whether a camera ray looks into the scene. Every real camera ray has a unit direction, so the zero
+// direction is free to mean "no ray here"; the renderer records black for it without tracing. (Why
+// not std::optional<Ray>: it would change the interface every camera and caller already uses, for the
+// one camera that needs it; a zero direction costs one compare in render_sample.)
+constexpr bool sees_scene(const Ray& camera_ray) {
+    return camera_ray.direction != Vec3{};
+}
 
 // The orthonormal viewing basis of paper §IV as corrected in the errata:
 // w = (eye − look_at)/‖eye − look_at‖, u = (up × w)/‖up × w‖, v = w × u.
@@ -47,6 +57,15 @@ struct CameraEntry {
 // The name → constructor table of cameras ("pinhole", …).
 const std::vector<CameraEntry>& camera_table();
 
+// Where a camera stands and how it is turned: eye, look_at and up (read and checked), and the basis.
+// Shared by every camera.
+struct ViewFrame {
+    Vec3 eye;
+    Vec3 look_at;
+    CameraBasis basis;
+};
+ViewFrame read_view_frame(Params& params);
+
 // The viewing parameters shared by the perspective cameras: eye, look_at, up, and either the paper's
 // view-plane distance d (in pixels) with zoom, or a vertical field of view. Reads and checks them.
 struct ViewParams {
@@ -57,5 +76,8 @@ struct ViewParams {
     double pixel_size = 1;     // 1 / zoom
 };
 ViewParams read_view_params(Params& params, FilmSize film);
+// The (not normalised) direction from the eye through the view-plane point of `film`: its component
+// along −w is the view distance d, across it the film offset from the image centre in view-plane units.
+Vec3 view_plane_direction(const ViewParams& view, FilmSize size, Point2 film);
 
 }  // namespace glint

@@ -7,13 +7,13 @@ namespace glint {
 // The virtual pinhole camera of paper §IV: every ray starts at the eye and passes through a point of
 // the view plane at distance d along −w; the plane's pixels are pixel_size (1/zoom) wide.
 class PinholeCamera final : public Camera {
-public:
+  public:
     PinholeCamera(const ViewParams& view, FilmSize film) : view_(view), film_(film) {}
     Ray generate_ray(Point2 film, Point2 lens) const override;
 
     static std::unique_ptr<Camera> create(Params& params, const BuildContext& context, FilmSize film);
 
-private:
+  private:
     ViewParams view_;
     FilmSize film_;
 };

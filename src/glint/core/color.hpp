@@ -40,12 +40,24 @@ struct Rgb {
     friend constexpr bool operator==(const Rgb&, const Rgb&) = default;
 };
 
-constexpr Rgb operator+(Rgb a, const Rgb& b) { return a += b; }
-constexpr Rgb operator-(const Rgb& a, const Rgb& b) { return {a.r - b.r, a.g - b.g, a.b - b.b}; }
-constexpr Rgb operator*(Rgb a, const Rgb& b) { return a *= b; }
-constexpr Rgb operator*(Rgb a, double s) { return a *= s; }
-constexpr Rgb operator*(double s, Rgb a) { return a *= s; }
-constexpr Rgb operator/(const Rgb& a, double s) { return a * (1.0 / s); }
+constexpr Rgb operator+(Rgb a, const Rgb& b) {
+    return a += b;
+}
+constexpr Rgb operator-(const Rgb& a, const Rgb& b) {
+    return {a.r - b.r, a.g - b.g, a.b - b.b};
+}
+constexpr Rgb operator*(Rgb a, const Rgb& b) {
+    return a *= b;
+}
+constexpr Rgb operator*(Rgb a, double s) {
+    return a *= s;
+}
+constexpr Rgb operator*(double s, Rgb a) {
+    return a *= s;
+}
+constexpr Rgb operator/(const Rgb& a, double s) {
+    return a * (1.0 / s);
+}
 
 inline std::ostream& operator<<(std::ostream& os, const Rgb& c) {
     return os << '(' << c.r << ", " << c.g << ", " << c.b << ')';

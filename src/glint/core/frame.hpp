@@ -14,7 +14,8 @@ struct Frame {
         const double sign = std::copysign(1.0, n.z);
         const double a = -1.0 / (sign + n.z);
         const double b = n.x * n.y * a;
-        return {Vec3{1.0 + sign * n.x * n.x * a, sign * b, -sign * n.x}, Vec3{b, sign + n.y * n.y * a, -n.y}, n};
+        return {Vec3{1.0 + sign * n.x * n.x * a, sign * b, -sign * n.x}, Vec3{b, sign + n.y * n.y * a, -n.y},
+                n};
     }
 
     Vec3 to_local(const Vec3& v) const { return {dot(v, s), dot(v, t), dot(v, n)}; }

@@ -16,14 +16,18 @@ constexpr std::uint64_t mix64(std::uint64_t x) {
 }
 
 // Hashes a sequence of integers; each is mixed in turn so that (a, b) and (b, a) differ.
-constexpr std::uint64_t hash_values(std::uint64_t first) { return mix64(first); }
+constexpr std::uint64_t hash_values(std::uint64_t first) {
+    return mix64(first);
+}
 template <typename... Rest>
 constexpr std::uint64_t hash_values(std::uint64_t first, Rest... rest) {
     return mix64(first ^ hash_values(static_cast<std::uint64_t>(rest)...) * 0x2545f4914f6cdd1dull);
 }
 
 // The top 53 bits of a hash as a double in [0, 1): exact, never 1.0.
-constexpr double to_unit_double(std::uint64_t bits) { return static_cast<double>(bits >> 11) * 0x1.0p-53; }
+constexpr double to_unit_double(std::uint64_t bits) {
+    return static_cast<double>(bits >> 11) * 0x1.0p-53;
+}
 
 // A bijection of [0, length) chosen by `key`: Kensler's hash-based permutation ("Correlated
 // Multi-Jittered Sampling", Pixar 2013), with cycle walking to stay inside the range. Lets a sampler
@@ -74,13 +78,13 @@ struct SampleKey {
 // A stream of uniform numbers for one sample: number k is SampleKey::uniform(first_dimension + k).
 // It holds a counter, but the counter lives on the stack of one sample, so purity is kept.
 class SampleRng {
-public:
+  public:
     constexpr SampleRng(const SampleKey& key, std::uint32_t first_dimension)
         : key_(key), dimension_(first_dimension) {}
     double uniform() { return key_.uniform(dimension_++); }
     std::uint32_t dimension() const { return dimension_; }
 
-private:
+  private:
     SampleKey key_;
     std::uint32_t dimension_;
 };

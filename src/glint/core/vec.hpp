@@ -40,34 +40,64 @@ struct Vec3 {
     friend constexpr bool operator==(const Vec3&, const Vec3&) = default;
 };
 
-constexpr Vec3 operator+(Vec3 a, const Vec3& b) { return a += b; }
-constexpr Vec3 operator-(Vec3 a, const Vec3& b) { return a -= b; }
-constexpr Vec3 operator*(Vec3 a, double s) { return a *= s; }
-constexpr Vec3 operator*(double s, Vec3 a) { return a *= s; }
-constexpr Vec3 operator/(const Vec3& a, double s) { return a * (1.0 / s); }
-constexpr Vec3 hadamard(const Vec3& a, const Vec3& b) { return {a.x * b.x, a.y * b.y, a.z * b.z}; }
+constexpr Vec3 operator+(Vec3 a, const Vec3& b) {
+    return a += b;
+}
+constexpr Vec3 operator-(Vec3 a, const Vec3& b) {
+    return a -= b;
+}
+constexpr Vec3 operator*(Vec3 a, double s) {
+    return a *= s;
+}
+constexpr Vec3 operator*(double s, Vec3 a) {
+    return a *= s;
+}
+constexpr Vec3 operator/(const Vec3& a, double s) {
+    return a * (1.0 / s);
+}
+constexpr Vec3 hadamard(const Vec3& a, const Vec3& b) {
+    return {a.x * b.x, a.y * b.y, a.z * b.z};
+}
 
-constexpr double dot(const Vec3& a, const Vec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+constexpr double dot(const Vec3& a, const Vec3& b) {
+    return a.x * b.x + a.y * b.y + a.z * b.z;
+}
 constexpr Vec3 cross(const Vec3& a, const Vec3& b) {
     return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
-constexpr double length_squared(const Vec3& v) { return dot(v, v); }
-inline double length(const Vec3& v) { return std::sqrt(dot(v, v)); }
-inline Vec3 normalize(const Vec3& v) { return v / length(v); }
-inline Vec3 abs(const Vec3& v) { return {std::abs(v.x), std::abs(v.y), std::abs(v.z)}; }
-inline double max_component(const Vec3& v) { return std::max({v.x, v.y, v.z}); }
-inline double min_component(const Vec3& v) { return std::min({v.x, v.y, v.z}); }
+constexpr double length_squared(const Vec3& v) {
+    return dot(v, v);
+}
+inline double length(const Vec3& v) {
+    return std::sqrt(dot(v, v));
+}
+inline Vec3 normalize(const Vec3& v) {
+    return v / length(v);
+}
+inline Vec3 abs(const Vec3& v) {
+    return {std::abs(v.x), std::abs(v.y), std::abs(v.z)};
+}
+inline double max_component(const Vec3& v) {
+    return std::max({v.x, v.y, v.z});
+}
+inline double min_component(const Vec3& v) {
+    return std::min({v.x, v.y, v.z});
+}
 inline Vec3 min(const Vec3& a, const Vec3& b) {
     return {std::min(a.x, b.x), std::min(a.y, b.y), std::min(a.z, b.z)};
 }
 inline Vec3 max(const Vec3& a, const Vec3& b) {
     return {std::max(a.x, b.x), std::max(a.y, b.y), std::max(a.z, b.z)};
 }
-inline bool is_finite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+inline bool is_finite(const Vec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
 
 // Mirror reflection of the incident direction `i` (pointing towards the surface) about the normal `n`:
 // R = I − 2 (I·N) N (paper eq. 16).
-constexpr Vec3 reflect(const Vec3& i, const Vec3& n) { return i - 2.0 * dot(i, n) * n; }
+constexpr Vec3 reflect(const Vec3& i, const Vec3& n) {
+    return i - 2.0 * dot(i, n) * n;
+}
 
 inline std::ostream& operator<<(std::ostream& os, const Vec3& v) {
     return os << '(' << v.x << ", " << v.y << ", " << v.z << ')';

@@ -10,7 +10,9 @@ Rgb Film::pixel(int x, int y) const {
     return p.count ? p.sum / static_cast<double>(p.count) : Rgb{};
 }
 
-void Film::clear() { std::fill(pixels_.begin(), pixels_.end(), Pixel{}); }
+void Film::clear() {
+    std::fill(pixels_.begin(), pixels_.end(), Pixel{});
+}
 
 Image Film::to_image() const {
     Image image(width_, height_);

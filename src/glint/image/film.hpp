@@ -12,7 +12,7 @@ namespace glint {
 // Sums are in double, and each pixel is only ever written by the tile that owns it, in sample order,
 // so the result does not depend on threads or tiling.
 class Film {
-public:
+  public:
     Film(int width, int height);
     int width() const { return width_; }
     int height() const { return height_; }
@@ -24,11 +24,13 @@ public:
     }
     // The mean of the samples of a pixel (black before any).
     Rgb pixel(int x, int y) const;
-    std::uint64_t sample_count(int x, int y) const { return pixels_[static_cast<size_t>(y) * width_ + x].count; }
+    std::uint64_t sample_count(int x, int y) const {
+        return pixels_[static_cast<size_t>(y) * width_ + x].count;
+    }
     void clear();
     Image to_image() const;
 
-private:
+  private:
     struct Pixel {
         Rgb sum;
         std::uint64_t count = 0;

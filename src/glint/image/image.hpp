@@ -11,7 +11,8 @@ struct Image {
     std::vector<float> rgb;
 
     Image() = default;
-    Image(int w, int h) : width(w), height(h), rgb(static_cast<size_t>(w) * static_cast<size_t>(h) * 3, 0.0f) {}
+    Image(int w, int h)
+        : width(w), height(h), rgb(static_cast<size_t>(w) * static_cast<size_t>(h) * 3, 0.0f) {}
     float* pixel(int x, int y) { return &rgb[(static_cast<size_t>(y) * width + x) * 3]; }
     const float* pixel(int x, int y) const { return &rgb[(static_cast<size_t>(y) * width + x) * 3]; }
 };

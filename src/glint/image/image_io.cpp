@@ -15,7 +15,8 @@ namespace glint {
 
 std::optional<ImageFormat> image_format_for(const std::filesystem::path& path) {
     std::string ext = path.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     if (ext == ".png") {
         return ImageFormat::Png;
     }
@@ -28,10 +29,13 @@ std::optional<ImageFormat> image_format_for(const std::filesystem::path& path) {
     return std::nullopt;
 }
 
-std::string supported_image_extensions() { return ".png, .pfm, .exr"; }
+std::string supported_image_extensions() {
+    return ".png, .pfm, .exr";
+}
 
 unsigned char linear_to_srgb8(float linear) {
-    const double c = std::clamp(static_cast<double>(linear), 0.0, 1.0);  // NaN is never written: the film counts it
+    const double c =
+        std::clamp(static_cast<double>(linear), 0.0, 1.0);  // NaN is never written: the film counts it
     const double encoded = c <= 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055;
     return static_cast<unsigned char>(std::lround(encoded * 255.0));
 }
@@ -64,7 +68,8 @@ Image read_pfm(const std::filesystem::path& path) {
     Image image(width, height);
     const bool big_endian = scale > 0;
     for (int y = height - 1; y >= 0; --y) {
-        in.read(reinterpret_cast<char*>(image.pixel(0, y)), static_cast<std::streamsize>(width) * 3 * sizeof(float));
+        in.read(reinterpret_cast<char*>(image.pixel(0, y)),
+                static_cast<std::streamsize>(width) * 3 * sizeof(float));
     }
     if (!in) {
         throw std::runtime_error(path.string() + ": PFM file is truncated");
@@ -91,7 +96,8 @@ void write_file_atomically(const std::filesystem::path& path, const std::vector<
         const bool closed = std::fclose(f) == 0;
         if (!ok || !closed) {
             std::filesystem::remove(temp);
-            throw ImageWriteError("cannot write '" + path.string() + "': " + std::strerror(ok ? errno : saved_errno));
+            throw ImageWriteError("cannot write '" + path.string() +
+                                  "': " + std::strerror(ok ? errno : saved_errno));
         }
     }
     std::error_code ec;

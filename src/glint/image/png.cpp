@@ -16,7 +16,8 @@ std::vector<unsigned char> encode_png(const Image& image) {
         const auto* d = static_cast<const unsigned char*>(data);
         out->insert(out->end(), d, d + size);
     };
-    if (!stbi_write_png_to_func(append, &bytes, image.width, image.height, 3, pixels.data(), image.width * 3)) {
+    if (!stbi_write_png_to_func(append, &bytes, image.width, image.height, 3, pixels.data(),
+                                image.width * 3)) {
         throw ImageWriteError("PNG encoding failed");
     }
     return bytes;

@@ -13,10 +13,14 @@ namespace glint {
 
 Rgb render_sample(const Scene& scene, const Sampler& sampler, const Integrator& integrator, int x, int y,
                   std::uint32_t sample, RayCounters& rays) {
-    const SampleKey key{scene.settings.seed, static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y), sample};
+    const SampleKey key{scene.settings.seed, static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y),
+                        sample};
     const Point2 offset = sampler.sample_2d(key, kFilmDimension);
     const Point2 lens = sampler.sample_2d(key, kLensDimension);
     const Ray ray = scene.camera->generate_ray({x + offset.x, y + offset.y}, lens);
+    if (!sees_scene(ray)) {
+        return Rgb{};  // outside the camera's image (a fisheye's corners): black, nothing traced
+    }
     SampleStream stream(sampler, key, kFirstIntegratorDimension);
     return integrator.radiance(scene, ray, stream, rays);
 }
@@ -66,12 +70,14 @@ RenderStats render(const Scene& scene, Film& film, const RenderCallbacks& callba
     }
     std::optional<tbb::global_control> thread_limit;
     if (settings.threads > 0) {
-        thread_limit.emplace(tbb::global_control::max_allowed_parallelism, static_cast<size_t>(settings.threads));
+        thread_limit.emplace(tbb::global_control::max_allowed_parallelism,
+                             static_cast<size_t>(settings.threads));
     }
 
     RenderStats stats;
     stats.samples_per_pixel = sampler->samples_per_pixel();
-    const std::vector<Tile> tiles = make_tiles(settings.width, settings.height, std::max(1, settings.tile_size));
+    const std::vector<Tile> tiles =
+        make_tiles(settings.width, settings.height, std::max(1, settings.tile_size));
     const std::vector<std::uint32_t> passes = make_passes(stats.samples_per_pixel);
     const double total_work = static_cast<double>(settings.width) * settings.height * stats.samples_per_pixel;
 
@@ -98,7 +104,8 @@ RenderStats render(const Scene& scene, Film& film, const RenderCallbacks& callba
             for (int y = tile.y0; y < tile.y1; ++y) {
                 for (int x = tile.x0; x < tile.x1; ++x) {
                     for (std::uint32_t s = first_sample; s < first_sample + pass; ++s) {
-                        const Rgb radiance = render_sample(scene, *sampler, *integrator, x, y, s, result.rays);
+                        const Rgb radiance =
+                            render_sample(scene, *sampler, *integrator, x, y, s, result.rays);
                         if (!radiance.is_finite()) {
                             if (result.nonfinite++ == 0) {
                                 result.bad_x = x;
@@ -111,7 +118,8 @@ RenderStats render(const Scene& scene, Film& film, const RenderCallbacks& callba
                     }
                 }
             }
-            const auto done = work_done.fetch_add(static_cast<std::uint64_t>(tile.x1 - tile.x0) * (tile.y1 - tile.y0) * pass) +
+            const auto done = work_done.fetch_add(static_cast<std::uint64_t>(tile.x1 - tile.x0) *
+                                                  (tile.y1 - tile.y0) * pass) +
                               static_cast<std::uint64_t>(tile.x1 - tile.x0) * (tile.y1 - tile.y0) * pass;
             if (callbacks.progress) {
                 std::unique_lock lock(progress_mutex, std::try_to_lock);

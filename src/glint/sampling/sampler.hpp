@@ -20,7 +20,7 @@
 namespace glint {
 
 class Sampler {
-public:
+  public:
     virtual ~Sampler() = default;
 
     // The number of samples per pixel this pattern takes (a pattern may round the request: jittered
@@ -30,7 +30,8 @@ public:
     // Point `key.sample` of the pattern for pixel (key.pixel_x, key.pixel_y) in `dimension`; in [0,1)².
     virtual Point2 sample_2d(const SampleKey& key, std::uint32_t dimension) const = 0;
 
-    // A 1-D sample; by default the x of the 2-D pattern, which is stratified for every pattern here.
+    // A 1-D sample; by default the x of the 2-D pattern, which is stratified into n intervals for every
+    // pattern but random (regular and jittered, whose x has only √n strata, override this).
     virtual double sample_1d(const SampleKey& key, std::uint32_t dimension) const {
         return sample_2d(key, dimension).x;
     }
@@ -38,14 +39,14 @@ public:
 
 // The samples one camera path draws, in order: a thin cursor over (sampler, key, dimension).
 class SampleStream {
-public:
+  public:
     SampleStream(const Sampler& sampler, const SampleKey& key, std::uint32_t first_dimension)
         : sampler_(&sampler), key_(key), dimension_(first_dimension) {}
     Point2 next_2d() { return sampler_->sample_2d(key_, dimension_++); }
     double next_1d() { return sampler_->sample_1d(key_, dimension_++); }
     const SampleKey& key() const { return key_; }
 
-private:
+  private:
     const Sampler* sampler_;
     SampleKey key_;
     std::uint32_t dimension_;

@@ -42,6 +42,8 @@ lights:
     return text;
 }
 
-SceneDesc default_scene() { return parse_scene_text(default_scene_text(), "<default scene>", "."); }
+SceneDesc default_scene() {
+    return parse_scene_text(default_scene_text(), "<default scene>", ".");
+}
 
 }  // namespace glint

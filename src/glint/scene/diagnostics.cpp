@@ -29,10 +29,18 @@ std::string format_diagnostic(const SourcePos& pos, const std::string& message) 
     }
     out << "error: " << message;
     if (pos.file && pos.line > 0 && pos.line <= static_cast<int>(pos.file->lines.size())) {
-        const std::string& text = pos.file->lines[static_cast<size_t>(pos.line - 1)];
+        std::string text = pos.file->lines[static_cast<size_t>(pos.line - 1)];
+        int column = pos.column;
+        // A very long line (generated JSON, a minified file) is cut to a window around the column.
+        constexpr int kWindow = 100;
+        if (static_cast<int>(text.size()) > 2 * kWindow) {
+            const int start = std::max(0, column - 1 - kWindow / 2);
+            text = (start > 0 ? "..." : "") + text.substr(static_cast<size_t>(start), kWindow) + "...";
+            column = column - start + (start > 0 ? 3 : 0);
+        }
         out << "\n    " << text << "\n    ";
         // Keep tabs in the caret line so the caret sits under the right character.
-        for (int i = 0; i + 1 < pos.column && i < static_cast<int>(text.size()); ++i) {
+        for (int i = 0; i + 1 < column && i < static_cast<int>(text.size()); ++i) {
             out << (text[static_cast<size_t>(i)] == '\t' ? '\t' : ' ');
         }
         out << '^';
@@ -64,7 +72,8 @@ size_t edit_distance(const std::string& a, const std::string& b) {
 
 std::string closest_match(const std::string& word, const std::vector<std::string>& candidates) {
     std::string best;
-    size_t best_distance = std::max<size_t>(2, word.size() / 3) + 1;
+    // Suggest only what is close: up to two edits, or half the word for long words (rotation → rotate).
+    size_t best_distance = std::max<size_t>(2, word.size() / 2) + 1;
     for (const std::string& candidate : candidates) {
         const size_t d = edit_distance(word, candidate);
         if (d < best_distance) {

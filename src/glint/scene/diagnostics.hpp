@@ -28,12 +28,12 @@ struct SourcePos {
 //       radious: 1
 //       ^
 class SceneError : public std::runtime_error {
-public:
+  public:
     SceneError(const SourcePos& pos, const std::string& message);
     const SourcePos& position() const { return pos_; }
     const std::string& message() const { return message_; }
 
-private:
+  private:
     SourcePos pos_;
     std::string message_;
 };

@@ -14,8 +14,8 @@ struct Node {
 
     Kind kind = Kind::Null;
     SourcePos pos;
-    std::string scalar;            // Kind::Scalar: the text as written
-    std::vector<Node> items;       // Kind::Sequence: the elements; Kind::Map: the values, in file order
+    std::string scalar;             // Kind::Scalar: the text as written
+    std::vector<Node> items;        // Kind::Sequence: the elements; Kind::Map: the values, in file order
     std::vector<std::string> keys;  // Kind::Map: keys[i] names items[i]
     std::vector<SourcePos> key_positions;
 

@@ -55,7 +55,8 @@ std::string node_string(const Node& node, const std::string& what) {
 
 Vec3 node_vec3(const Node& node, const std::string& what) {
     if (!node.is_sequence() || node.items.size() != 3) {
-        throw SceneError(node.pos, what + " must be a list of three numbers [x, y, z], not " + node.describe());
+        throw SceneError(node.pos,
+                         what + " must be a list of three numbers [x, y, z], not " + node.describe());
     }
     return {node_number(node.items[0], what + "[0]"), node_number(node.items[1], what + "[1]"),
             node_number(node.items[2], what + "[2]")};
@@ -66,8 +67,8 @@ Rgb node_color(const Node& node, const std::string& what) {
         return Rgb(node_number(node, what));
     }
     if (!node.is_sequence() || node.items.size() != 3) {
-        throw SceneError(node.pos,
-                         what + " must be a colour: [r, g, b] or one number for grey, not " + node.describe());
+        throw SceneError(
+            node.pos, what + " must be a colour: [r, g, b] or one number for grey, not " + node.describe());
     }
     return {node_number(node.items[0], what + "[0]"), node_number(node.items[1], what + "[1]"),
             node_number(node.items[2], what + "[2]")};
@@ -88,7 +89,9 @@ void Params::fail(const std::string& key, const std::string& message) const {
     throw SceneError(pos_of(key), message);
 }
 
-void Params::fail(const std::string& message) const { throw SceneError(map_->pos, message); }
+void Params::fail(const std::string& message) const {
+    throw SceneError(map_->pos, message);
+}
 
 const Node* Params::node(const std::string& key) {
     asked_.insert(key);
@@ -114,13 +117,25 @@ const Node& Params::require(const std::string& key) {
     return *n;
 }
 
-Params Params::child(const std::string& key) { return Params(require(key), what_ + "." + key); }
+Params Params::child(const std::string& key) {
+    return Params(require(key), what_ + "." + key);
+}
 
-double Params::number(const std::string& key) { return node_number(require(key), what_ + "." + key); }
-std::int64_t Params::integer(const std::string& key) { return node_integer(require(key), what_ + "." + key); }
-std::string Params::string(const std::string& key) { return node_string(require(key), what_ + "." + key); }
-Vec3 Params::vec3(const std::string& key) { return node_vec3(require(key), what_ + "." + key); }
-Rgb Params::color(const std::string& key) { return node_color(require(key), what_ + "." + key); }
+double Params::number(const std::string& key) {
+    return node_number(require(key), what_ + "." + key);
+}
+std::int64_t Params::integer(const std::string& key) {
+    return node_integer(require(key), what_ + "." + key);
+}
+std::string Params::string(const std::string& key) {
+    return node_string(require(key), what_ + "." + key);
+}
+Vec3 Params::vec3(const std::string& key) {
+    return node_vec3(require(key), what_ + "." + key);
+}
+Rgb Params::color(const std::string& key) {
+    return node_color(require(key), what_ + "." + key);
+}
 bool Params::boolean(const std::string& key) {
     const Node& n = require(key);
     const std::string s = node_string(n, what_ + "." + key);
@@ -133,16 +148,24 @@ bool Params::boolean(const std::string& key) {
     throw SceneError(n.pos, what_ + "." + key + " must be true or false, not '" + s + "'");
 }
 
-double Params::number(const std::string& key, double fallback) { return has(key) ? number(key) : fallback; }
+double Params::number(const std::string& key, double fallback) {
+    return has(key) ? number(key) : fallback;
+}
 std::int64_t Params::integer(const std::string& key, std::int64_t fallback) {
     return has(key) ? integer(key) : fallback;
 }
 std::string Params::string(const std::string& key, const std::string& fallback) {
     return has(key) ? string(key) : fallback;
 }
-Vec3 Params::vec3(const std::string& key, const Vec3& fallback) { return has(key) ? vec3(key) : fallback; }
-Rgb Params::color(const std::string& key, const Rgb& fallback) { return has(key) ? color(key) : fallback; }
-bool Params::boolean(const std::string& key, bool fallback) { return has(key) ? boolean(key) : fallback; }
+Vec3 Params::vec3(const std::string& key, const Vec3& fallback) {
+    return has(key) ? vec3(key) : fallback;
+}
+Rgb Params::color(const std::string& key, const Rgb& fallback) {
+    return has(key) ? color(key) : fallback;
+}
+bool Params::boolean(const std::string& key, bool fallback) {
+    return has(key) ? boolean(key) : fallback;
+}
 
 double Params::positive(const std::string& key) {
     const double v = number(key);
@@ -152,7 +175,9 @@ double Params::positive(const std::string& key) {
     return v;
 }
 
-double Params::positive(const std::string& key, double fallback) { return has(key) ? positive(key) : fallback; }
+double Params::positive(const std::string& key, double fallback) {
+    return has(key) ? positive(key) : fallback;
+}
 
 double Params::non_negative(const std::string& key, double fallback) {
     const double v = number(key, fallback);
@@ -165,7 +190,8 @@ double Params::non_negative(const std::string& key, double fallback) {
 std::int64_t Params::positive_integer(const std::string& key, std::int64_t fallback) {
     const std::int64_t v = integer(key, fallback);
     if (v <= 0) {
-        fail(key, what_ + "." + key + " must be a whole number greater than zero, not " + map_->find(key)->scalar);
+        fail(key,
+             what_ + "." + key + " must be a whole number greater than zero, not " + map_->find(key)->scalar);
     }
     return v;
 }

@@ -18,7 +18,7 @@
 namespace glint {
 
 class Params {
-public:
+  public:
     // `what` names the object in messages, e.g. "sphere" or "camera".
     Params(const Node& map, std::string what);
 
@@ -58,7 +58,8 @@ public:
     Vec3 direction(const std::string& key);
     Vec3 direction(const std::string& key, const Vec3& fallback);
     // One of a fixed set of words.
-    std::string choice(const std::string& key, const std::vector<std::string>& choices, const std::string& fallback);
+    std::string choice(const std::string& key, const std::vector<std::string>& choices,
+                       const std::string& fallback);
 
     // The raw node under `key` (marking it read), or nullptr.
     const Node* node(const std::string& key);
@@ -71,7 +72,7 @@ public:
     [[noreturn]] void fail(const std::string& key, const std::string& message) const;
     [[noreturn]] void fail(const std::string& message) const;
 
-private:
+  private:
     const Node& require(const std::string& key);
 
     const Node* map_;

@@ -9,7 +9,7 @@
 namespace glint {
 
 struct SceneDesc {
-    Node root;                        // the top-level map: render, camera, materials, objects, lights, …
+    Node root;                       // the top-level map: render, camera, materials, objects, lights, …
     std::filesystem::path base_dir;  // relative paths inside the scene resolve against this folder
 };
 

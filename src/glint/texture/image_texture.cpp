@@ -73,15 +73,18 @@ Image load_texture_image(const std::filesystem::path& path) {
         return load_exr(path);
     }
     const std::string name = path.string();
+    // Each loader fills width and height, so it must run before they are read (not as a sibling argument).
     int width = 0, height = 0, channels = 0;
     if (stbi_is_hdr(name.c_str())) {
-        return from_stb(stbi_loadf(name.c_str(), &width, &height, &channels, 3), width, height, 1.0, false);
+        float* pixels = stbi_loadf(name.c_str(), &width, &height, &channels, 3);
+        return from_stb(pixels, width, height, 1.0, false);
     }
     if (stbi_is_16_bit(name.c_str())) {
-        return from_stb(stbi_load_16(name.c_str(), &width, &height, &channels, 3), width, height, 1.0 / 65535,
-                        true);
+        stbi_us* pixels = stbi_load_16(name.c_str(), &width, &height, &channels, 3);
+        return from_stb(pixels, width, height, 1.0 / 65535, true);
     }
-    return from_stb(stbi_load(name.c_str(), &width, &height, &channels, 3), width, height, 1.0 / 255, true);
+    stbi_uc* pixels = stbi_load(name.c_str(), &width, &height, &channels, 3);
+    return from_stb(pixels, width, height, 1.0 / 255, true);
 }
 
 ImageTexture::ImageTexture(Image image) : image_(std::move(image)) {

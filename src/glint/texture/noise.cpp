@@ -67,6 +67,9 @@ PerlinNoise::PerlinNoise(std::uint32_t seed) {
 }
 
 double PerlinNoise::noise(const Vec3& p) const {
+    if (!is_finite(p)) {
+        return 0;
+    }
     const double fx = std::floor(p.x), fy = std::floor(p.y), fz = std::floor(p.z);
     // Lattice cell (mod 256; the permutation repeats with period 256) and the offset inside it.
     const auto cell = [](double f) { return static_cast<int>(f - 256.0 * std::floor(f / 256.0)) & 255; };

@@ -1,0 +1,11 @@
+// The subcommands that live in their own files. Each adds itself to the app; it does its work in its
+// CLI11 callback and reports failure by printing a message and throwing CLI::RuntimeError(exit code),
+// which main() turns into the process exit code (2 bad input, 1 other failure).
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+// `glint samples`: draw, list and measure sample patterns (samples_command.cpp).
+void add_samples_command(CLI::App& app);
+// `glint serve`: a live preview in the browser (serve_command.cpp).
+void add_serve_command(CLI::App& app);

@@ -1,0 +1,229 @@
+#include "glint/serve/preview_session.hpp"
+
+#include <cmath>
+
+#include "glint/image/image_io.hpp"
+#include "glint/render/progressive.hpp"
+#include "glint/scene/scene_writer.hpp"
+
+namespace glint {
+
+namespace {
+
+// The coarse preview takes about this many samples, whatever the image size, so that the first
+// picture of a new view comes back quickly.
+constexpr double kCoarseSamples = 12000;
+
+std::string base64(const std::vector<unsigned char>& bytes) {
+    static const char* digits = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string out;
+    out.reserve((bytes.size() + 2) / 3 * 4);
+    size_t i = 0;
+    for (; i + 2 < bytes.size(); i += 3) {
+        const unsigned v = (bytes[i] << 16) | (bytes[i + 1] << 8) | bytes[i + 2];
+        out += digits[(v >> 18) & 63];
+        out += digits[(v >> 12) & 63];
+        out += digits[(v >> 6) & 63];
+        out += digits[v & 63];
+    }
+    if (i < bytes.size()) {
+        const unsigned v = (bytes[i] << 16) | (i + 1 < bytes.size() ? bytes[i + 1] << 8 : 0);
+        out += digits[(v >> 18) & 63];
+        out += digits[(v >> 12) & 63];
+        out += i + 1 < bytes.size() ? digits[(v >> 6) & 63] : '=';
+        out += '=';
+    }
+    return out;
+}
+
+std::shared_ptr<const Scene> build_checked(const SceneDesc& desc) {
+    Scene scene = build_scene(desc);
+    const std::int64_t pixels = static_cast<std::int64_t>(scene.settings.width) * scene.settings.height;
+    if (pixels > PreviewSession::kMaxPixels) {
+        const Node* render = desc.root.find("render");
+        throw SceneError(
+            render ? render->pos : desc.root.pos,
+            "the preview renders at most 4096 × 4096 pixels; render larger images with glint render");
+    }
+    return std::make_shared<const Scene>(std::move(scene));
+}
+
+}  // namespace
+
+PreviewSession::PreviewSession(const SceneDesc& desc, std::string display_name)
+    : display_name_(std::move(display_name)), base_dir_(desc.base_dir) {
+    root_ = desc.root;
+    yaml_ = write_scene_yaml(root_);
+    scene_ = build_checked(desc);  // the user's own file, so its errors point into it
+    render_thread_ = std::thread([this] { render_loop(); });
+}
+
+PreviewSession::~PreviewSession() {
+    stop();
+}
+
+void PreviewSession::stop() {
+    {
+        std::lock_guard lock(mutex_);
+        stop_ = true;
+    }
+    changed_.notify_all();
+    if (render_thread_.joinable() && render_thread_.get_id() != std::this_thread::get_id()) {
+        render_thread_.join();
+    }
+}
+
+std::uint64_t PreviewSession::apply(const std::vector<SceneEdit>& edits) {
+    std::lock_guard edit_lock(edit_mutex_);
+    Node root;
+    {
+        std::lock_guard lock(mutex_);
+        root = root_;
+    }
+    apply_edits(root, edits);
+    std::string yaml = write_scene_yaml(root);
+    const SceneDesc desc = parse_scene_text(yaml, "<scene in the browser>", base_dir_);
+    std::shared_ptr<const Scene> scene = build_checked(desc);
+    std::uint64_t generation = 0;
+    {
+        std::lock_guard lock(mutex_);
+        root_ = desc.root;
+        yaml_ = std::move(yaml);
+        scene_ = std::move(scene);
+        generation = generation_.load() + 1;
+        generation_ = generation;  // the render thread's cancel check sees this at its next tile
+        status_ = {generation, ""};
+    }
+    changed_.notify_all();
+    return generation;
+}
+
+PreviewSession::State PreviewSession::state() const {
+    std::lock_guard lock(mutex_);
+    return {generation_.load(), root_, yaml_, scene_->settings};
+}
+
+std::shared_ptr<const PreviewFrame> PreviewSession::latest_frame() const {
+    std::lock_guard lock(mutex_);
+    return frame_;
+}
+
+std::shared_ptr<const PreviewFrame> PreviewSession::wait_for_frame(std::uint64_t seen_id,
+                                                                   std::chrono::milliseconds timeout) const {
+    std::unique_lock lock(mutex_);
+    changed_.wait_for(lock, timeout, [&] { return stop_.load() || (frame_ && frame_->id != seen_id); });
+    return frame_;
+}
+
+PreviewStatus PreviewSession::status() const {
+    std::lock_guard lock(mutex_);
+    return status_;
+}
+
+std::optional<PreviewSession::FocusHit> PreviewSession::focus_at(double x, double y) const {
+    std::shared_ptr<const Scene> scene;
+    {
+        std::lock_guard lock(mutex_);
+        scene = scene_;
+    }
+    const double w = scene->settings.width, h = scene->settings.height;
+    if (!(x >= 0 && x <= w && y >= 0 && y <= h)) {
+        return std::nullopt;
+    }
+    const Ray ray = scene->camera->generate_ray({x, y}, {0.5, 0.5});
+    const Ray axis = scene->camera->generate_ray({w / 2, h / 2}, {0.5, 0.5});
+    Hit hit;
+    if (!scene->intersect(ray, std::numeric_limits<double>::infinity(), hit)) {
+        return std::nullopt;
+    }
+    const double distance = hit.t * length(ray.direction);
+    const double cosine = dot(normalize(ray.direction), normalize(axis.direction));
+    return FocusHit{distance, distance * cosine};
+}
+
+void PreviewSession::publish(const Image& image, std::uint64_t generation, std::uint32_t samples,
+                             std::uint32_t target, double mrays, double seconds) {
+    auto frame = std::make_shared<PreviewFrame>();
+    frame->generation = generation;
+    frame->width = image.width;
+    frame->height = image.height;
+    frame->samples = samples;
+    frame->target = target;
+    frame->mrays_per_second = mrays;
+    frame->seconds = seconds;
+    frame->png = encode_png(image);
+    {
+        std::lock_guard lock(mutex_);
+        if (generation != generation_.load()) {
+            return;  // the scene changed while encoding: this picture is already stale
+        }
+        frame->id = next_frame_id_++;
+        nlohmann::json data = {{"id", frame->id},
+                               {"generation", generation},
+                               {"width", frame->width},
+                               {"height", frame->height},
+                               {"samples", samples},
+                               {"target", target},
+                               {"mrays_per_second", std::round(mrays * 100) / 100},
+                               {"seconds", std::round(seconds * 1000) / 1000},
+                               {"png", base64(frame->png)}};
+        frame->event = "event: frame\ndata: " + data.dump() + "\n\n";
+        frame_ = std::move(frame);
+    }
+    changed_.notify_all();
+}
+
+void PreviewSession::render_loop() {
+    std::uint64_t generation = 0;
+    std::shared_ptr<const Scene> scene;
+    std::unique_ptr<ProgressiveRender> progressive;
+    std::chrono::steady_clock::time_point started;
+    const auto cancelled = [&] {
+        return stop_.load(std::memory_order_relaxed) || generation_.load() != generation;
+    };
+    while (true) {
+        {
+            std::unique_lock lock(mutex_);
+            changed_.wait(lock, [&] {
+                return stop_.load() || generation_.load() != generation ||
+                       (progressive && !progressive->complete());
+            });
+            if (stop_) {
+                return;
+            }
+            if (generation_.load() != generation) {
+                generation = generation_.load();
+                progressive.reset();  // before the scene it refers to
+                scene = scene_;
+            }
+        }
+        try {
+            if (!progressive) {
+                started = std::chrono::steady_clock::now();
+                progressive = std::make_unique<ProgressiveRender>(*scene);
+                const double pixels = static_cast<double>(scene->settings.width) * scene->settings.height;
+                const int block =
+                    std::max(1, static_cast<int>(std::lround(std::sqrt(pixels / kCoarseSamples))));
+                Image coarse;
+                if (block > 1 && progressive->coarse_preview(block, coarse, cancelled)) {
+                    publish(
+                        coarse, generation, 0, progressive->target_samples(), progressive->mrays_per_second(),
+                        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count());
+                }
+                continue;
+            }
+            if (progressive->next_pass(cancelled)) {
+                publish(progressive->film().to_image(), generation, progressive->samples_done(),
+                        progressive->target_samples(), progressive->mrays_per_second(),
+                        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count());
+            }
+        } catch (const std::exception& e) {
+            // Keep serving: show the error and wait for the next change.
+            std::lock_guard lock(mutex_);
+            status_ = {generation, std::string("render failed: ") + e.what()};
+            progressive.reset();  // nothing in progress: the loop waits for the next change
+        }
+    }
+}
+
+}  // namespace glint

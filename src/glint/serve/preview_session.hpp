@@ -1,0 +1,113 @@
+// The state behind `glint serve`: the scene description being edited, the scene built from it, and a
+// render thread that refines it pass after pass and publishes each frame for the browsers watching.
+//
+// Any change restarts the accumulation at once: the render thread abandons its pass at the next tile,
+// shows a coarse preview (one sample per block of pixels) of the new view, then refines it.
+#pragma once
+
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "glint/image/image.hpp"
+#include "glint/scene/scene.hpp"
+#include "glint/scene/scene_desc.hpp"
+#include "glint/serve/scene_edit.hpp"
+
+namespace glint {
+
+// One picture sent to the browsers.
+struct PreviewFrame {
+    std::uint64_t id = 0;          // increases with every frame
+    std::uint64_t generation = 0;  // the version of the scene it shows
+    int width = 0, height = 0;
+    std::uint32_t samples = 0;  // samples per pixel so far (0: the coarse preview)
+    std::uint32_t target = 0;   // samples per pixel when complete
+    double mrays_per_second = 0;
+    double seconds = 0;  // since the change that started this accumulation
+    std::vector<unsigned char> png;
+    std::string event;  // the whole server-sent event ("event: frame\ndata: {…}\n\n"), made once for all
+};
+
+// A render failure (or anything else the page should show) for the current generation.
+struct PreviewStatus {
+    std::uint64_t generation = 0;
+    std::string error;  // empty: rendering fine
+};
+
+class PreviewSession {
+  public:
+    // Images larger than this many pixels are refused: the preview keeps a film and a PNG of them.
+    static constexpr std::int64_t kMaxPixels = 4096 * 4096;
+
+    // Builds the scene (throws SceneError) and starts the render thread.
+    PreviewSession(const SceneDesc& desc, std::string display_name);
+    ~PreviewSession();
+    PreviewSession(const PreviewSession&) = delete;
+    PreviewSession& operator=(const PreviewSession&) = delete;
+
+    // Applies the edits to a copy of the description, writes it as YAML, parses and builds that (so any
+    // error points at a line of the YAML), and on success makes it current and restarts the render.
+    // Throws EditError or SceneError and leaves everything as it was.
+    std::uint64_t apply(const std::vector<SceneEdit>& edits);
+
+    struct State {
+        std::uint64_t generation;
+        Node root;
+        std::string yaml;
+        RenderSettings settings;  // as built: the defaults filled in
+    };
+    State state() const;
+    const std::string& display_name() const { return display_name_; }
+
+    std::shared_ptr<const PreviewFrame> latest_frame() const;
+    // Waits until there is a frame other than `seen_id`, the timeout passes or the session stops; then
+    // returns the latest frame (possibly still `seen_id`, or null if none yet).
+    std::shared_ptr<const PreviewFrame> wait_for_frame(std::uint64_t seen_id,
+                                                       std::chrono::milliseconds timeout) const;
+    PreviewStatus status() const;
+
+    // Where the ray through film point (x, y) (pixels, from the top-left) first hits the scene, through
+    // the lens centre: the distance along the ray and the depth along the view axis (the distance of
+    // the plane of focus that makes that point sharp). nullopt when the ray escapes.
+    struct FocusHit {
+        double distance, depth;
+    };
+    std::optional<FocusHit> focus_at(double x, double y) const;
+
+    // Ends the render thread and wakes every waiter; idempotent.
+    void stop();
+    bool stopping() const { return stop_.load(); }
+
+  private:
+    void render_loop();
+    void publish(const Image& image, std::uint64_t generation, std::uint32_t samples, std::uint32_t target,
+                 double mrays, double seconds);
+
+    std::string display_name_;
+    std::filesystem::path base_dir_;
+
+    mutable std::mutex mutex_;  // guards everything below that is not atomic
+    mutable std::condition_variable changed_;
+    Node root_;
+    std::string yaml_;
+    std::shared_ptr<const Scene> scene_;
+    std::shared_ptr<const PreviewFrame> frame_;
+    PreviewStatus status_;
+    std::uint64_t next_frame_id_ = 1;
+    std::atomic<std::uint64_t> generation_{1};
+    std::atomic<bool> stop_{false};
+
+    std::mutex edit_mutex_;  // one edit at a time builds a scene
+    std::thread render_thread_;
+};
+
+}  // namespace glint

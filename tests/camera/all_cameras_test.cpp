@@ -1,0 +1,54 @@
+// Properties every camera in the table must have.
+#include <gtest/gtest.h>
+
+#include "camera/camera_test_util.hpp"
+
+namespace glint {
+namespace {
+
+// The extra keys a camera type needs to be built.
+std::string required_keys(const std::string& type) {
+    return type == "thin-lens" ? ", lens_radius: 0.2" : "";
+}
+
+TEST(AllCameras, LookingStraightDownOrUpWithTheDefaultUpGivesFiniteUnitRays) {
+    for (const CameraEntry& entry : camera_table()) {
+        for (const std::string view :
+             {"eye: [0, 5, 0], look_at: [0, 0, 0]", "eye: [1, -2, 3], look_at: [1, 7, 3]",
+              "eye: [0, 0, 0], look_at: [0, 0, -1]"}) {
+            SCOPED_TRACE(entry.name + " " + view);
+            const Scene scene =
+                test::camera_scene("{type: " + entry.name + ", " + view + required_keys(entry.name) + "}");
+            int seen = 0;
+            for (const Point2 film :
+                 {Point2{0, 0}, Point2{100, 50}, Point2{199.99, 99.99}, Point2{120, 60}}) {
+                for (const Point2 lens : {Point2{0, 0}, Point2{0.5, 0.5}, Point2{0.99, 0.3}}) {
+                    const Ray r = scene.camera->generate_ray(film, lens);
+                    ASSERT_TRUE(is_finite(r.origin));
+                    ASSERT_TRUE(is_finite(r.direction));
+                    if (sees_scene(r)) {
+                        EXPECT_NEAR(length(r.direction), 1, 1e-12);
+                        ++seen;
+                    }
+                }
+            }
+            EXPECT_GE(seen, 6);  // only a fisheye's corners may see nothing
+        }
+    }
+}
+
+TEST(AllCameras, TheImageCentreLooksAtLookAt) {
+    for (const CameraEntry& entry : camera_table()) {
+        SCOPED_TRACE(entry.name);
+        const Vec3 look_at{-2, 0.5, 0};
+        const Scene scene =
+            test::camera_scene("{type: " + entry.name + ", eye: [1, 2, 3], look_at: [-2, 0.5, 0]" +
+                               required_keys(entry.name) + "}");
+        for (const Point2 lens : {Point2{0.5, 0.5}, Point2{0.1, 0.8}}) {
+            EXPECT_LT(test::distance_to_line(scene.camera->generate_ray({100, 50}, lens), look_at), 1e-12);
+        }
+    }
+}
+
+}  // namespace
+}  // namespace glint

@@ -1,0 +1,30 @@
+// Helpers shared by the camera tests.
+#pragma once
+
+#include <string>
+
+#include "glint/camera/camera.hpp"
+#include "test_util.hpp"
+
+namespace glint::test {
+
+// A scene holding only a camera (given as a YAML flow map) and an image size.
+inline Scene camera_scene(const std::string& camera, int width = 200, int height = 100) {
+    return scene_from_text("render: {width: " + std::to_string(width) +
+                           ", height: " + std::to_string(height) + "}\ncamera: " + camera + "\n");
+}
+
+// The distance from `point` to the line of `ray` (both ways), for "does this ray pass through p".
+inline double distance_to_line(const Ray& ray, const Vec3& point) {
+    const Vec3 d = normalize(ray.direction);
+    const Vec3 to_point = point - ray.origin;
+    return length(to_point - dot(to_point, d) * d);
+}
+
+// Where `ray` crosses the plane across `forward` (unit) at `depth` in front of `eye`.
+inline Vec3 at_depth(const Ray& ray, const Vec3& eye, const Vec3& forward, double depth) {
+    const double t = (depth - dot(ray.origin - eye, forward)) / dot(ray.direction, forward);
+    return ray.at(t);
+}
+
+}  // namespace glint::test

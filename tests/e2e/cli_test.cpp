@@ -1,0 +1,79 @@
+// The command line as a user meets it: the default scene, every example, help and version.
+#include <gtest/gtest.h>
+
+#include "glint/image/image_io.hpp"
+#include "test_util.hpp"
+
+namespace glint {
+namespace {
+
+TEST(Cli, RendersTheDefaultSceneToPngWithASummary) {
+    test::TempDir dir;
+    const auto out = dir / "default.png";
+    const auto r = test::run_glint("render --width 64 --height 36 --spp 2 -o '" + out.string() + "'");
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_GT(std::filesystem::file_size(out), 100u);
+    // The summary: resolution, samples per pixel, time, rays, Mrays/s.
+    EXPECT_NE(r.output.find("64x36, 4 spp"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("Mrays/s"), std::string::npos) << r.output;
+    // No progress bar when stderr is not a terminal.
+    EXPECT_EQ(r.output.find("ETA"), std::string::npos) << r.output;
+}
+
+TEST(Cli, WritesExrAndPfmAndRejectsUnknownExtensions) {
+    test::TempDir dir;
+    for (const std::string name : {"a.exr", "a.pfm"}) {
+        const auto r = test::run_glint("render --width 16 --height 9 --spp 1 --quiet -o '" +
+                                       (dir / name).string() + "'");
+        ASSERT_EQ(r.exit_code, 0) << r.output;
+        EXPECT_TRUE(std::filesystem::exists(dir / name));
+    }
+    const auto r = test::run_glint("render --quiet -o '" + (dir / "a.bmp").string() + "'");
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_NE(r.output.find(".png, .pfm, .exr"), std::string::npos) << r.output;
+    EXPECT_FALSE(std::filesystem::exists(dir / "a.bmp"));
+}
+
+TEST(Cli, BadFlagsAreBadInput) {
+    EXPECT_EQ(test::run_glint("render --spp 0 --quiet -o /tmp/never.png").exit_code, 2);
+    EXPECT_EQ(test::run_glint("render --frobnicate").exit_code, 2);
+    const auto r = test::run_glint("render --sampler jitterd --quiet -o /tmp/never.png");
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_NE(r.output.find("did you mean 'jittered'"), std::string::npos) << r.output;
+    EXPECT_FALSE(std::filesystem::exists("/tmp/never.png"));
+    EXPECT_EQ(test::run_glint("render -o /nonexistent-dir/x.png --quiet").exit_code, 2);
+}
+
+TEST(Cli, HelpAndVersion) {
+    const auto help = test::run_glint("--help");
+    EXPECT_EQ(help.exit_code, 0);
+    EXPECT_NE(help.output.find("render"), std::string::npos);
+    const auto version = test::run_glint("--version");
+    EXPECT_EQ(version.exit_code, 0);
+    EXPECT_NE(version.output.find(GLINT_VERSION), std::string::npos);
+    const auto render_help = test::run_glint("render --help");
+    EXPECT_EQ(render_help.exit_code, 0);
+    EXPECT_NE(render_help.output.find("--spp"), std::string::npos);
+}
+
+TEST(Cli, EveryExampleRenders) {
+    test::TempDir dir;
+    int rendered = 0;
+    for (const auto& entry :
+         std::filesystem::directory_iterator(std::string(GLINT_SOURCE_DIR) + "/examples")) {
+        const auto ext = entry.path().extension();
+        if (ext != ".yaml" && ext != ".json") {
+            continue;
+        }
+        const auto out = dir / (entry.path().stem().string() + ".png");
+        const auto r = test::run_glint("render '" + entry.path().string() +
+                                       "' --width 32 --height 24 --spp 1 --quiet -o '" + out.string() + "'");
+        EXPECT_EQ(r.exit_code, 0) << entry.path() << "\n" << r.output;
+        EXPECT_TRUE(std::filesystem::exists(out)) << entry.path();
+        ++rendered;
+    }
+    EXPECT_GE(rendered, 1);
+}
+
+}  // namespace
+}  // namespace glint

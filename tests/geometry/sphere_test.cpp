@@ -1,0 +1,112 @@
+#include "glint/geometry/sphere.hpp"
+
+#include <gtest/gtest.h>
+
+#include "glint/core/hash.hpp"
+
+namespace glint {
+namespace {
+
+TEST(Sphere, HitFromOutsideTakesTheNearRoot) {
+    const Sphere s({0, 0, 0}, 1);
+    Hit hit;
+    ASSERT_TRUE(s.intersect({{0, 0, 5}, {0, 0, -1}}, kInf, hit));
+    EXPECT_DOUBLE_EQ(hit.t, 4.0);
+    EXPECT_NEAR(hit.point.z, 1.0, 1e-15);
+    EXPECT_EQ(hit.normal, Vec3(0, 0, 1));
+}
+
+TEST(Sphere, TIsInUnitsOfTheDirection) {
+    const Sphere s({0, 0, 0}, 1);
+    Hit hit;
+    ASSERT_TRUE(s.intersect({{0, 0, 5}, {0, 0, -2}}, kInf, hit));
+    EXPECT_DOUBLE_EQ(hit.t, 2.0);
+}
+
+TEST(Sphere, HitFromInsideTakesTheFarRootWithOutwardNormal) {
+    const Sphere s({1, 2, 3}, 2);
+    Hit hit;
+    ASSERT_TRUE(s.intersect({{1, 2, 3}, {1, 0, 0}}, kInf, hit));
+    EXPECT_DOUBLE_EQ(hit.t, 2.0);
+    EXPECT_NEAR(hit.normal.x, 1.0, 1e-15);  // outward even though the ray is inside
+}
+
+TEST(Sphere, SphereBehindTheRayIsMissed) {
+    const Sphere s({0, 0, -5}, 1);
+    Hit hit;
+    EXPECT_FALSE(s.intersect({{0, 0, 0}, {0, 0, 1}}, kInf, hit));
+    EXPECT_FALSE(s.occluded({{0, 0, 0}, {0, 0, 1}}, kInf));
+}
+
+TEST(Sphere, TangentRayTouchesOnceAndAMissMisses) {
+    const Sphere s({0, 0, 0}, 1);
+    Hit hit;
+    ASSERT_TRUE(s.intersect({{1, 0, 5}, {0, 0, -1}}, kInf, hit));  // grazes at (1, 0, 0)
+    EXPECT_NEAR(hit.t, 5.0, 1e-7);
+    EXPECT_NEAR(hit.point.x, 1.0, 1e-12);
+    EXPECT_FALSE(s.intersect({{1.0000001, 0, 5}, {0, 0, -1}}, kInf, hit));
+}
+
+TEST(Sphere, TMaxIsRespected) {
+    const Sphere s({0, 0, 0}, 1);
+    Hit hit;
+    EXPECT_FALSE(s.intersect({{0, 0, 5}, {0, 0, -1}}, 4.0, hit));
+    EXPECT_TRUE(s.intersect({{0, 0, 5}, {0, 0, -1}}, 4.0001, hit));
+    EXPECT_FALSE(s.occluded({{0, 0, 5}, {0, 0, -1}}, 3.9));
+}
+
+TEST(Sphere, SmallFarSphereKeepsPrecision) {
+    // The naive discriminant b² − 4ac cancels catastrophically here (b² ≈ 4ac ≈ 1e24 while the
+    // difference is ~1e-2); the robust form still finds the hit at the right distance.
+    const double r = 1e-3;
+    const Sphere s({0, 0, -1e6}, r);
+    Hit hit;
+    ASSERT_TRUE(s.intersect({{0, 0, 0}, {0, 0, -1}}, kInf, hit));
+    EXPECT_NEAR(hit.t, 1e6 - r, 1e-9 * 1e6);
+    ASSERT_TRUE(s.intersect({{0.5 * r, 0, 0}, {0, 0, -1}}, kInf, hit));
+    EXPECT_NEAR(hit.point.z, -1e6 + r * std::sqrt(0.75), 1e-9);
+    // A ray that passes just outside must miss.
+    EXPECT_FALSE(s.intersect({{1.001 * r, 0, 0}, {0, 0, -1}}, kInf, hit));
+}
+
+TEST(Sphere, RandomHitsLieOnTheSphereAndLeavingRaysDoNotRehit) {
+    for (double scale : {1e-3, 1.0, 1e5}) {
+        const Vec3 center = Vec3{0.3, -0.7, 2.0} * scale;
+        const Sphere s(center, scale);
+        for (std::uint32_t i = 0; i < 2000; ++i) {
+            const SampleKey key{11, i, 0, 0};
+            const Vec3 origin = center + Vec3{key.uniform(0) - 0.5, key.uniform(1) - 0.5, 5} * scale;
+            const Vec3 target =
+                center + Vec3{key.uniform(2) - 0.5, key.uniform(3) - 0.5, key.uniform(4) - 0.5} * scale;
+            const Ray ray{origin, target - origin};
+            Hit hit;
+            ASSERT_TRUE(s.intersect(ray, kInf, hit));
+            EXPECT_NEAR(length(hit.point - center), scale, 1e-12 * scale);
+            // Reflected and transmitted rays leaving the hit point never hit the same surface at ~0.
+            const Vec3 out = reflect(normalize(ray.direction), hit.normal);
+            Hit again;
+            EXPECT_FALSE(s.intersect(spawn_ray(hit, out), kInf, again)) << "scale " << scale << " ray " << i;
+            ASSERT_TRUE(s.intersect(spawn_ray(hit, ray.direction), kInf, again));
+            EXPECT_GT(again.t * length(ray.direction), 1e-6 * scale);  // the far side, not the same point
+        }
+    }
+}
+
+TEST(Sphere, AreaSamplesLieOnTheSurfaceWithUniformDensity) {
+    const Sphere s({1, 2, 3}, 2);
+    Vec3 mean;
+    constexpr int kN = 20000;
+    for (std::uint32_t i = 0; i < kN; ++i) {
+        const SampleKey key{5, i, 0, 0};
+        const auto sample = s.sample_area({key.uniform(0), key.uniform(1)});
+        ASSERT_TRUE(sample);
+        EXPECT_NEAR(length(sample->point - Vec3(1, 2, 3)), 2.0, 1e-12);
+        EXPECT_DOUBLE_EQ(sample->pdf_area, 1 / (16 * kPi));
+        mean += sample->point / kN;
+    }
+    // The centroid of a uniform sphere is its centre; each coordinate has σ = r/√3 per sample.
+    EXPECT_NEAR(length(mean - Vec3(1, 2, 3)), 0.0, 5 * 2 / std::sqrt(3.0 * kN) * std::sqrt(3.0));
+}
+
+}  // namespace
+}  // namespace glint

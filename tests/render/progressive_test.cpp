@@ -1,0 +1,73 @@
+// Progressive rendering: passes in order add up to exactly what render() produces.
+#include "glint/render/progressive.hpp"
+
+#include <gtest/gtest.h>
+
+#include "glint/render/render.hpp"
+#include "glint/scene/scene.hpp"
+#include "glint/scene/scene_desc.hpp"
+
+namespace glint {
+namespace {
+
+Scene small_default_scene(std::uint32_t spp) {
+    RenderOverrides o;
+    o.width = 40;
+    o.height = 23;  // not a multiple of the tile size
+    o.samples_per_pixel = spp;
+    return build_scene(default_scene(), o);
+}
+
+TEST(ProgressiveRender, AllPassesGiveTheBitsOfRender) {
+    const Scene scene = small_default_scene(25);  // jittered: 25 = 5×5, passes 1+2+4+8+10
+    Film expected(40, 23);
+    const RenderStats stats = render(scene, expected);
+
+    ProgressiveRender progressive(scene);
+    EXPECT_EQ(progressive.target_samples(), 25u);
+    std::vector<std::uint32_t> done_after_pass;
+    while (!progressive.complete()) {
+        ASSERT_TRUE(progressive.next_pass());
+        done_after_pass.push_back(progressive.samples_done());
+    }
+    EXPECT_EQ(done_after_pass, (std::vector<std::uint32_t>{1, 3, 7, 15, 25}));
+    EXPECT_EQ(progressive.film().to_image().rgb, expected.to_image().rgb);
+    EXPECT_EQ(progressive.rays().total(), stats.rays.total());
+    EXPECT_EQ(progressive.film().sample_count(39, 22), 25u);
+}
+
+TEST(ProgressiveRender, CancelledPassIsNotCounted) {
+    const Scene scene = small_default_scene(4);
+    ProgressiveRender progressive(scene);
+    EXPECT_FALSE(progressive.next_pass([] { return true; }));
+    EXPECT_EQ(progressive.samples_done(), 0u);
+    EXPECT_FALSE(progressive.complete());
+}
+
+TEST(ProgressiveRender, CoarsePreviewRepeatsOneSamplePerBlock) {
+    const Scene scene = small_default_scene(1);
+    ProgressiveRender progressive(scene);
+    Image preview;
+    ASSERT_TRUE(progressive.coarse_preview(8, preview));
+    ASSERT_EQ(preview.width, 40);
+    ASSERT_EQ(preview.height, 23);
+    // The block's value is the radiance of sample 0 at the block's centre pixel.
+    RayCounters rays;
+    const auto sampler = make_sampler(scene.settings.sampler, 1);
+    const auto integrator = make_integrator(scene.settings.integrator, scene.settings);
+    const Rgb centre = render_sample(scene, *sampler, *integrator, 12, 12, 0, rays);  // block (8..16)²
+    for (int y = 8; y < 16; ++y) {
+        for (int x = 8; x < 16; ++x) {
+            EXPECT_EQ(preview.pixel(x, y)[0], static_cast<float>(centre.r));
+            EXPECT_EQ(preview.pixel(x, y)[2], static_cast<float>(centre.b));
+        }
+    }
+    // The last, partial block row (y 16..22) takes its own centre.
+    const Rgb corner = render_sample(scene, *sampler, *integrator, 36, 19, 0, rays);
+    EXPECT_EQ(preview.pixel(39, 22)[1], static_cast<float>(corner.g));
+    EXPECT_EQ(progressive.samples_done(), 0u);  // the film is untouched
+    EXPECT_EQ(progressive.film().sample_count(0, 0), 0u);
+}
+
+}  // namespace
+}  // namespace glint

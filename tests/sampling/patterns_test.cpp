@@ -1,0 +1,279 @@
+// Properties every sample pattern promises (docs/scene-format.md, "Samplers"), checked on the points
+// themselves: counts, range, n-rooks and jitter strata, the radical inverse values of the errata, net
+// properties of the low-discrepancy patterns, purity and per-pixel variation.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "glint/sampling/halton.hpp"
+#include "glint/sampling/hammersley.hpp"
+#include "glint/sampling/low_discrepancy.hpp"
+#include "glint/sampling/multijittered.hpp"
+#include "glint/sampling/pattern_stats.hpp"
+#include "glint/sampling/sampler.hpp"
+
+namespace glint {
+namespace {
+
+const std::vector<std::string> kAllPatterns = {"regular",        "random",     "jittered", "n-rooks",
+                                               "multi-jittered", "hammersley", "halton",   "sobol"};
+
+std::vector<Point2> points_of(const std::string& name, std::uint32_t n, std::uint32_t px = 3,
+                              std::uint32_t py = 5, std::uint64_t seed = 7, std::uint32_t dimension = 0) {
+    const auto sampler = make_sampler(name, n);
+    EXPECT_NE(sampler, nullptr) << name;
+    return pattern_points(*sampler, SampleKey{seed, px, py, 0}, dimension);
+}
+
+std::uint32_t expected_count(const std::string& name, std::uint32_t requested) {
+    if (name == "regular" || name == "jittered") {
+        std::uint32_t k = 1;
+        while (k * k < requested) {
+            ++k;
+        }
+        return k * k;
+    }
+    return requested;
+}
+
+TEST(SamplerTable, HasEveryPattern) {
+    for (const std::string& name : kAllPatterns) {
+        EXPECT_NE(make_sampler(name, 4), nullptr) << name;
+    }
+    EXPECT_EQ(sampler_names().size(), kAllPatterns.size());
+    EXPECT_EQ(make_sampler("no-such-pattern", 4), nullptr);
+}
+
+TEST(SamplePatterns, CountsAndRange) {
+    for (const std::string& name : kAllPatterns) {
+        for (std::uint32_t n : {1u, 2u, 7u, 8u, 16u, 30u, 64u, 100u}) {
+            const auto sampler = make_sampler(name, n);
+            ASSERT_EQ(sampler->samples_per_pixel(), expected_count(name, n)) << name << " n=" << n;
+            for (std::uint32_t dimension : {0u, 1u, 5u}) {
+                for (const Point2& p : points_of(name, n, 1, 2, 3, dimension)) {
+                    ASSERT_TRUE(p.x >= 0 && p.x < 1 && p.y >= 0 && p.y < 1)
+                        << name << " (" << p.x << ", " << p.y << ")";
+                }
+                SampleKey key{3, 1, 2, 0};
+                for (key.sample = 0; key.sample < sampler->samples_per_pixel(); ++key.sample) {
+                    const double u = sampler->sample_1d(key, dimension);
+                    ASSERT_TRUE(u >= 0 && u < 1) << name;
+                }
+            }
+        }
+    }
+}
+
+TEST(SamplePatterns, OneDimensionalSamplesAreStratified) {
+    // sample_1d puts one value in each of the n intervals [k/n, (k+1)/n) for every pattern that can
+    // (all of them at a power-of-four count, except random).
+    for (const std::string& name : kAllPatterns) {
+        if (name == "random") {
+            continue;
+        }
+        const auto sampler = make_sampler(name, 64);
+        std::vector<Point2> values;
+        SampleKey key{11, 4, 9, 0};
+        for (key.sample = 0; key.sample < 64; ++key.sample) {
+            values.push_back({sampler->sample_1d(key, 3), 0.5});
+        }
+        EXPECT_TRUE(points_per_cell_equal(values, 64, 1)) << name;
+    }
+}
+
+TEST(SamplePatterns, NRooksConditionForNRooksAndMultiJittered) {
+    for (const char* name : {"n-rooks", "multi-jittered"}) {
+        for (std::uint32_t n : {1u, 5u, 8u, 16u, 17u, 64u, 256u}) {
+            for (std::uint32_t px = 0; px < 3; ++px) {
+                EXPECT_TRUE(satisfies_n_rooks(points_of(name, n, px, 1, 2, px))) << name << " n=" << n;
+            }
+        }
+    }
+    // The check itself fails on a pattern that breaks the condition.
+    EXPECT_FALSE(satisfies_n_rooks({{0.1, 0.1}, {0.2, 0.7}}));
+    EXPECT_FALSE(satisfies_n_rooks(points_of("random", 64)));
+}
+
+TEST(SamplePatterns, OnePointPerCellForJitteredAndMultiJittered) {
+    for (std::uint32_t k : {1u, 2u, 4u, 5u, 16u}) {
+        for (const char* name : {"jittered", "multi-jittered", "regular"}) {
+            EXPECT_TRUE(points_per_cell_equal(points_of(name, k * k, 2, k), k, k)) << name << " k=" << k;
+        }
+    }
+    // Jittered rounds 10 up to 16: one point in each cell of the 4 × 4 grid.
+    EXPECT_TRUE(points_per_cell_equal(points_of("jittered", 10), 4, 4));
+    // Multi-jittered takes 8 as is, on a 2 × 4 coarse grid; 7 on a 1 × 7 one.
+    const MultiJitteredSampler eight(8);
+    EXPECT_EQ(eight.columns(), 2u);
+    EXPECT_EQ(eight.rows(), 4u);
+    EXPECT_TRUE(points_per_cell_equal(points_of("multi-jittered", 8), 2, 4));
+    EXPECT_EQ(MultiJitteredSampler(7).columns(), 1u);
+    EXPECT_FALSE(points_per_cell_equal(points_of("random", 64), 8, 8));
+}
+
+TEST(Hammersley, RadicalInverseMatchesTheErrata) {
+    const double expected[] = {0, .5, .25, .75, .125, .625, .375, .875, .0625};
+    for (std::uint32_t i = 0; i < 9; ++i) {
+        EXPECT_EQ(radical_inverse(2, i), expected[i]) << "Φ₂(" << i << ")";
+        EXPECT_EQ(bits_to_unit(reverse_bits(i)), expected[i]);
+        EXPECT_EQ(bits_to_unit(sobol_dimension0(i)), expected[i]);
+    }
+    EXPECT_DOUBLE_EQ(radical_inverse(3, 5), 2.0 / 3 + 1.0 / 9);  // 5 = 12₃ → 0.21₃
+    EXPECT_DOUBLE_EQ(radical_inverse(3, 9), 1.0 / 27);
+}
+
+TEST(Hammersley, UnscrambledPointsAreIOverNAndPhi2) {
+    const std::uint32_t n = 16;
+    for (std::uint32_t i = 0; i < n; ++i) {
+        const Point2 p = hammersley_point(i, n);
+        EXPECT_EQ(p.x, i / 16.0);
+        EXPECT_EQ(p.y, radical_inverse(2, i));
+    }
+    EXPECT_EQ(hammersley_point(5, 8).y, 0.625);
+    EXPECT_EQ(hammersley_point(6, 8).y, 0.375);
+    std::vector<Point2> plain;
+    for (std::uint32_t i = 0; i < 64; ++i) {
+        plain.push_back(hammersley_point(i, 64));
+    }
+    EXPECT_TRUE(is_base2_net(plain));
+}
+
+TEST(SamplePatterns, LowDiscrepancyPatternsAreBase2Nets) {
+    // Scrambling keeps the nets: every pixel's 2^k points have one point per elementary interval.
+    for (const char* name : {"hammersley", "sobol"}) {
+        for (std::uint32_t n : {1u, 2u, 4u, 32u, 256u, 1024u}) {
+            for (std::uint32_t px = 0; px < 3; ++px) {
+                EXPECT_TRUE(is_base2_net(points_of(name, n, px, 2 * px, 5, px))) << name << " n=" << n;
+            }
+        }
+    }
+    EXPECT_FALSE(is_base2_net(points_of("random", 256)));
+    EXPECT_FALSE(is_base2_net(points_of("jittered", 256)));
+}
+
+TEST(SamplePatterns, UnscrambledSobolFirstPointsAreANet) {
+    for (std::uint32_t k = 0; k <= 10; ++k) {
+        std::vector<Point2> points;
+        for (std::uint32_t i = 0; i < (1u << k); ++i) {
+            points.push_back({bits_to_unit(sobol_dimension0(i)), bits_to_unit(sobol_dimension1(i))});
+        }
+        EXPECT_TRUE(is_base2_net(points)) << "k=" << k;
+    }
+    // The second dimension in index order: direction numbers v₁ = 1/2, v₂ = 3/4, v₃ = 5/8 (the columns
+    // of Pascal's triangle mod 2), point i the XOR of v_j over the set bits j of i.
+    const double expected[] = {0, .5, .75, .25, .625, .125};
+    for (std::uint32_t i = 0; i < 6; ++i) {
+        EXPECT_EQ(bits_to_unit(sobol_dimension1(i)), expected[i]) << i;
+    }
+}
+
+TEST(SamplePatterns, HaltonStratifiesInBasesTwoAndThree) {
+    // The first 2^a·3^b Halton points have one point in each cell of the 2^a × 3^b grid; the Owen
+    // scramble keeps it.
+    for (std::uint32_t a = 0; a <= 3; ++a) {
+        for (std::uint32_t b = 0; b <= 3; ++b) {
+            const std::uint32_t columns = 1u << a, rows = b == 0 ? 1 : (b == 1 ? 3 : (b == 2 ? 9 : 27));
+            EXPECT_TRUE(points_per_cell_equal(points_of("halton", columns * rows, a, b), columns, rows))
+                << columns << "×" << rows;
+        }
+    }
+    // Different seeds give different scrambles of Φ₃, each a permutation of the digits.
+    EXPECT_NE(owen_scrambled_radical_inverse3(1, 1), owen_scrambled_radical_inverse3(1, 2));
+}
+
+TEST(SamplePatterns, PureFunctionOfSeedPixelSampleAndDimension) {
+    for (const std::string& name : kAllPatterns) {
+        const auto a = make_sampler(name, 16);
+        const auto b = make_sampler(name, 16);
+        for (std::uint32_t s : {0u, 7u, 15u}) {
+            const SampleKey key{42, 10, 20, s};
+            EXPECT_EQ(a->sample_2d(key, 4), b->sample_2d(key, 4)) << name;
+            EXPECT_EQ(a->sample_1d(key, 4), b->sample_1d(key, 4)) << name;
+        }
+        // Order of evaluation does not matter.
+        EXPECT_EQ(points_of(name, 16, 1, 1, 9, 2), points_of(name, 16, 1, 1, 9, 2)) << name;
+    }
+}
+
+TEST(SamplePatterns, NeighbouringPixelsAndDimensionsGetDifferentPatterns) {
+    for (const std::string& name : kAllPatterns) {
+        const std::vector<Point2> here = points_of(name, 16, 5, 5, 1, 0);
+        const std::vector<Point2> right = points_of(name, 16, 6, 5, 1, 0);
+        const std::vector<Point2> below = points_of(name, 16, 5, 6, 1, 0);
+        const std::vector<Point2> lens = points_of(name, 16, 5, 5, 1, 1);
+        const std::vector<Point2> reseeded = points_of(name, 16, 5, 5, 2, 0);
+        auto as_set = [](const std::vector<Point2>& v) {
+            std::set<std::pair<double, double>> s;
+            for (const Point2& p : v)
+                s.insert({p.x, p.y});
+            return s;
+        };
+        if (name == "regular") {
+            // The regular grid is the same in every pixel by definition; only the order differs.
+            EXPECT_EQ(as_set(here), as_set(right));
+            EXPECT_NE(here, right);
+            EXPECT_NE(here, lens);
+            continue;
+        }
+        EXPECT_NE(as_set(here), as_set(right)) << name;
+        EXPECT_NE(as_set(here), as_set(below)) << name;
+        EXPECT_NE(as_set(here), as_set(lens)) << name;
+        EXPECT_NE(as_set(here), as_set(reseeded)) << name;
+    }
+}
+
+TEST(SamplePatterns, FilmAndLensDimensionsAreUncorrelated) {
+    // Over many pixels, the film x and lens x of one sample must not be correlated (a pattern reusing
+    // the same index order in both dimensions would give a correlation near 1).
+    for (const std::string& name : kAllPatterns) {
+        const auto sampler = make_sampler(name, 16);
+        double sum_xy = 0, sum_x = 0, sum_y = 0, sum_xx = 0, sum_yy = 0;
+        int count = 0;
+        for (std::uint32_t px = 0; px < 32; ++px) {
+            for (std::uint32_t s = 0; s < 16; ++s) {
+                const SampleKey key{1, px, 0, s};
+                const double a = sampler->sample_2d(key, kFilmDimension).x;
+                const double b = sampler->sample_2d(key, kLensDimension).x;
+                sum_x += a, sum_y += b, sum_xy += a * b, sum_xx += a * a, sum_yy += b * b, ++count;
+            }
+        }
+        const double cov = sum_xy / count - sum_x / count * sum_y / count;
+        const double corr = cov / std::sqrt((sum_xx / count - sum_x * sum_x / count / count) *
+                                            (sum_yy / count - sum_y * sum_y / count / count));
+        EXPECT_LT(std::abs(corr), 0.15) << name;  // 512 pairs: the standard error is about 0.044
+    }
+}
+
+TEST(PatternStats, DiscrepancyOfOnePointMatchesClosedForms) {
+    // One point (x, y): D∞* = max(x, y, 1 − xy); T² = 1/9 − (1−x²)(1−y²)/2 + (1−x)(1−y).
+    for (const Point2 p : {Point2{0.5, 0.5}, Point2{0.2, 0.7}, Point2{0.9, 0.1}}) {
+        EXPECT_NEAR(star_discrepancy_linf({p}), std::max({p.x, p.y, 1 - p.x * p.y}), 1e-15);
+        const double t2 = 1.0 / 9 - (1 - p.x * p.x) * (1 - p.y * p.y) / 2 + (1 - p.x) * (1 - p.y);
+        EXPECT_NEAR(star_discrepancy_l2({p}), std::sqrt(t2), 1e-15);
+    }
+}
+
+TEST(PatternStats, DiscrepancyOrdersPatterns) {
+    // Averaged over pixels, a 256-point Sobol or Hammersley set has far lower discrepancy than random.
+    double random = 0, sobol = 0, hammersley = 0;
+    for (std::uint32_t px = 0; px < 8; ++px) {
+        random += star_discrepancy_linf(points_of("random", 256, px));
+        sobol += star_discrepancy_linf(points_of("sobol", 256, px));
+        hammersley += star_discrepancy_l2(points_of("hammersley", 256, px));
+    }
+    EXPECT_LT(sobol, 0.5 * random);
+    EXPECT_GT(random / 8, 0.03);  // ≈ 1.2/√256 for random points
+    EXPECT_LT(hammersley / 8, 0.01);
+}
+
+TEST(PatternStats, MinimumDistance) {
+    EXPECT_DOUBLE_EQ(minimum_distance({{0.1, 0.1}, {0.9, 0.9}, {0.4, 0.5}}), 0.5);
+    // The regular 8 × 8 grid: its spacing.
+    EXPECT_NEAR(minimum_distance(points_of("regular", 64)), 1.0 / 8, 1e-12);
+}
+
+}  // namespace
+}  // namespace glint
