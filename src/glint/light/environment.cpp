@@ -5,21 +5,13 @@
 #include <cstdlib>
 
 #include "glint/image/image_io.hpp"
+#include "glint/sampling/warps.hpp"
 #include "glint/scene/build_context.hpp"
 #include "glint/scene/params.hpp"
 
 namespace glint {
 
 namespace {
-constexpr double kInv4Pi = 1 / (4 * kPi);
-
-Vec3 uniform_sphere(Point2 u) {
-    const double z = 1 - 2 * u.x;
-    const double r = safe_sqrt(1 - z * z);
-    const double phi = 2 * kPi * u.y;
-    return {r * std::cos(phi), r * std::sin(phi), z};
-}
-
 Image load_exr(const std::filesystem::path& path) {
     float* rgba = nullptr;
     int width = 0;
@@ -98,8 +90,8 @@ std::optional<LightSample> EnvironmentLight::sample(const Hit& at, Point2 u) con
     s.delta = false;
     s.infinite = true;
     if (!distribution_) {
-        s.wi = uniform_sphere(u);
-        s.pdf = kInv4Pi;
+        s.wi = square_to_uniform_sphere(u);
+        s.pdf = uniform_sphere_pdf();
     } else {
         double pdf_uv = 0;
         const Point2 uv = distribution_->sample(u, pdf_uv);
@@ -120,7 +112,7 @@ std::optional<LightSample> EnvironmentLight::sample(const Hit& at, Point2 u) con
 
 double EnvironmentLight::pdf(const Hit&, const Vec3& wi, const Hit*) const {
     if (!distribution_) {
-        return kInv4Pi;
+        return uniform_sphere_pdf();
     }
     const Point2 uv = direction_to_uv(to_map(wi));
     const double sin_theta = std::sin(kPi * uv.y);
