@@ -34,6 +34,26 @@ lights: [{type: area, radiance: [1, 2, 3], shape: {type: disk, center: [0, 0, 0]
     EXPECT_EQ(film.pixel(1, 2), Rgb(1, 2, 3));  // the front face, head-on
 }
 
+TEST(LightScene, AnEmissiveObjectIsAnAreaLight) {
+    // A sphere of radiance L and radius R, its centre a height d above a matte floor of albedo ρ: the
+    // floor point below it receives E = π L (R/d)² and shows ρ/π · E = ρ L (R/d)².
+    for (const char* integrator : {"raycast", "path"}) {
+        const Scene scene = scene_from_yaml(std::string(R"(
+render: {width: 8, height: 8, samples: 16, max_depth: 1, integrator: )") +
+                                            integrator + R"(}
+camera: {eye: [3, 0.5, 0], look_at: [0, 0, 0], fov: 0.05}
+objects:
+  - {type: plane, normal: [0, 1, 0], material: {type: matte, albedo: 0.5}}
+  - {type: sphere, center: [0, 2, 0], radius: 0.5, material: {type: emissive, radiance: 4}}
+)");
+        ASSERT_EQ(scene.lights.size(), 1u);
+        EXPECT_EQ(scene.shape_lights[1], 0);
+        EXPECT_NE(dynamic_cast<const AreaLight*>(scene.lights[0].get()), nullptr);
+        const test::RegionMean m = test::region_mean(test::render_film(scene), 0, 0, 8, 8);
+        EXPECT_NEAR(m.mean, 0.5 * 4 * (0.25 / 4), 4 * m.standard_error + 1e-3) << integrator;
+    }
+}
+
 TEST(LightScene, OneSidedEmittersAreDarkFromBehind) {
     const Scene scene = scene_from_yaml(R"(
 render: {width: 2, height: 2, samples: 1, integrator: raycast}
