@@ -116,6 +116,27 @@ lights: [{type: environment, radiance: 1}]
     }
 }
 
+TEST(Furnace, TheLibraryDielectricSplitsWithoutGainOrLoss) {
+    // The same with the material library's dielectric (exact Fresnel, η² radiance scaling across the
+    // interface, which cancels on the way out): Whitted finds both of its lobes at the two ends of u.
+    const Scene scene = scene_from_yaml(R"(
+render: {width: 12, height: 12, samples: 1, max_depth: 40, integrator: whitted}
+camera: {eye: [0, 0, 4], look_at: [0, 0, 0], fov: 30}
+objects: [{type: sphere, radius: 1, material: {type: dielectric, ior: 1.5}}]
+lights: [{type: environment, radiance: 1}]
+)");
+    Film film(12, 12);
+    const RenderStats stats = render(scene, film);
+    for (int y = 0; y < 12; ++y) {
+        for (int x = 0; x < 12; ++x) {
+            EXPECT_NEAR(film.pixel(x, y).g, 1.0, 2e-3) << x << ", " << y;
+        }
+    }
+    // Split, not chosen: each camera ray that meets the glass spawns a reflected and a refracted ray,
+    // and the refracted one two more where it leaves.
+    EXPECT_GT(stats.rays.secondary, 3 * stats.rays.camera / 2);
+}
+
 TEST(AmbientOcclusion, ProbesSeeWhatBlocksTheAmbientLight) {
     const auto floor_radiance = [](const std::string& extra_objects, const std::string& ao) {
         const Scene scene = scene_from_yaml(R"(
