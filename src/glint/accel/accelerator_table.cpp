@@ -1,10 +1,13 @@
 // The one name → constructor table of accelerators.
+#include "glint/accel/bvh.hpp"
 #include "glint/accel/linear.hpp"
 
 namespace glint {
 
 const std::vector<AcceleratorEntry>& accelerator_table() {
     static const std::vector<AcceleratorEntry> table = {
+        {"bvh", "8-wide SAH bounding volume hierarchy (the default)",
+         [](std::span<const Shape* const> shapes) { return std::make_unique<BvhAccelerator>(shapes); }},
         {"list", "every shape tested for every ray (brute force; the reference)",
          [](std::span<const Shape* const> shapes) { return std::make_unique<LinearAccelerator>(shapes); }},
     };

@@ -18,6 +18,7 @@ struct Hit {
     // it, so that no epsilon in scene units is needed and scaled scenes behave the same.
     double error = 0;
     std::uint32_t primitive = 0;  // index into the scene's primitives
+    std::uint32_t element = 0;    // which part of that primitive was hit: the triangle of a mesh
 };
 
 // Relative rounding error of hit points computed in double precision, with a wide margin: hit points
@@ -32,7 +33,9 @@ inline Vec3 offset_ray_origin(const Hit& hit, const Vec3& dir) {
     return dot(dir, hit.normal) >= 0 ? hit.point + offset : hit.point - offset;
 }
 
-inline Ray spawn_ray(const Hit& hit, const Vec3& dir) { return {offset_ray_origin(hit, dir), dir}; }
+inline Ray spawn_ray(const Hit& hit, const Vec3& dir) {
+    return {offset_ray_origin(hit, dir), dir};
+}
 
 // A ray from `hit` towards the point `target`, parametrised so that t = 1 reaches the target.
 inline Ray spawn_ray_to(const Hit& hit, const Vec3& target) {
