@@ -295,9 +295,16 @@ class PlyParser {
         return value;
     }
 
+    // Where a value was read, so that an error found later can point at it.
+    struct ValuePos {
+        int line = 0, column = 0;
+        std::size_t offset = 0;
+    };
+
     // Reads a list property's items into `items` (ints), checking the count.
     void read_list(const PlyProperty& property, std::vector<long long>& items) {
         items.clear();
+        item_pos_.clear();
         const double count = read_value(property.count_type);
         if (count < 0) {
             fail_data("a list has a negative length");
@@ -313,11 +320,17 @@ class PlyParser {
                 fail_data("a vertex index is not an integer");
             }
             items.push_back(static_cast<long long>(value));
+            item_pos_.push_back({token_line_, token_column_, token_offset_});
         }
     }
 
-    std::uint32_t vertex_index(long long index) const {
+    // Item k of the last list read, as a vertex index.
+    std::uint32_t vertex_index(const std::vector<long long>& items, std::size_t k) {
+        const long long index = items[k];
         if (index < 0 || static_cast<std::uint64_t>(index) >= vertex_count_) {
+            token_line_ = item_pos_[k].line;
+            token_column_ = item_pos_[k].column;
+            token_offset_ = item_pos_[k].offset;
             fail_data("vertex index " + std::to_string(index) + " is out of range (there are " +
                       std::to_string(vertex_count_) + " vertices)");
         }
@@ -384,10 +397,10 @@ class PlyParser {
         if (polygon.size() < 3) {
             fail_data("a face needs at least three vertices");
         }
-        const std::uint32_t first = vertex_index(polygon[0]);
-        std::uint32_t previous = vertex_index(polygon[1]);
+        const std::uint32_t first = vertex_index(polygon, 0);
+        std::uint32_t previous = vertex_index(polygon, 1);
         for (std::size_t k = 2; k < polygon.size(); ++k) {
-            const std::uint32_t current = vertex_index(polygon[k]);
+            const std::uint32_t current = vertex_index(polygon, k);
             mesh_.triangles.push_back({first, previous, current});
             previous = current;
         }
@@ -401,9 +414,9 @@ class PlyParser {
                 ++end;
             }
             for (std::size_t k = begin; k + 2 < end; ++k) {
-                std::uint32_t a = vertex_index(strip[k]);
-                std::uint32_t b = vertex_index(strip[k + 1]);
-                const std::uint32_t c = vertex_index(strip[k + 2]);
+                std::uint32_t a = vertex_index(strip, k);
+                std::uint32_t b = vertex_index(strip, k + 1);
+                const std::uint32_t c = vertex_index(strip, k + 2);
                 if ((k - begin) % 2 == 1) {
                     std::swap(a, b);  // every other triangle of a strip is wound the other way
                 }
@@ -430,6 +443,8 @@ class PlyParser {
     std::size_t token_offset_ = 0;           // binary: where the last value began
     const PlyElement* current_element_ = nullptr;
     std::uint64_t current_index_ = 0;
+
+    std::vector<ValuePos> item_pos_;  // where each item of the last list was read
 
     bool has_normals_ = false;
     MeshData mesh_;
