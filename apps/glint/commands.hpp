@@ -1,0 +1,9 @@
+// The subcommands that live in their own files. Each adds itself to the app; it does its work in its
+// CLI11 callback and reports failure by printing a message and throwing CLI::RuntimeError(exit code),
+// which main() turns into the process exit code (2 bad input, 1 other failure).
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+// `glint info SCENE`: what the scene holds and what its BVH costs (info_command.cpp).
+void add_info_command(CLI::App& app);
