@@ -7,6 +7,9 @@
 #include <random>
 #include <vector>
 
+#include <gtest/gtest.h>
+
+#include "glint/accel/accelerator.hpp"
 #include "glint/geometry/mesh.hpp"
 #include "glint/geometry/sphere.hpp"
 
@@ -83,6 +86,63 @@ inline MeshData cube_mesh(double lo, double hi) {
         mesh.triangles.push_back({q[0], q[2], q[3]});
     }
     return mesh;
+}
+
+inline std::vector<const Shape*> pointers(const std::vector<std::unique_ptr<Shape>>& shapes) {
+    std::vector<const Shape*> out;
+    for (const auto& s : shapes) {
+        out.push_back(s.get());
+    }
+    return out;
+}
+
+// Rays from random points around `box`, aimed at random points inside it (so most of them hit).
+inline std::vector<Ray> rays_into(const Bounds3& box, int count, std::uint64_t seed) {
+    std::mt19937_64 rng(seed);
+    const Vec3 margin = box.extent();
+    std::vector<Ray> rays;
+    for (int i = 0; i < count; ++i) {
+        const Vec3 origin = random_in_box(rng, box.lo - margin, box.hi + margin);
+        const Vec3 target = random_in_box(rng, box.lo, box.hi);
+        rays.push_back({origin, target - origin});
+    }
+    return rays;
+}
+
+// Compares two accelerators on `rays`: same hit or miss, same primitive and element, same t.
+// hit.element is compared only where it means something: on meshes.
+// Embree's leeway, for a backend that chooses triangles in float: a different triangle of the same
+// mesh is accepted at the same t (triangles sharing an edge), and a shadow ray must be occluded only
+// when it reaches a little further past the hit.
+struct Leeway {
+    bool tied_elements_allowed = false;
+    double occlusion_margin = 1e-9;  // relative
+};
+inline void expect_same_hits(const Accelerator& reference, const Accelerator& tested,
+                             const std::vector<Ray>& rays, const std::vector<const Shape*>& shapes,
+                             Leeway leeway = {}) {
+    int hits = 0;
+    for (const Ray& ray : rays) {
+        Hit a, b;
+        const bool found_a = reference.intersect(ray, kInf, a);
+        const bool found_b = tested.intersect(ray, kInf, b);
+        ASSERT_EQ(found_a, found_b) << "ray " << ray.origin << " + t " << ray.direction;
+        EXPECT_EQ(reference.occluded(ray, kInf), found_a);
+        EXPECT_EQ(tested.occluded(ray, kInf), found_b);
+        if (found_a) {
+            ++hits;
+            EXPECT_EQ(a.primitive, b.primitive);
+            if (dynamic_cast<const Mesh*>(shapes[a.primitive]) != nullptr) {
+                if (!leeway.tied_elements_allowed || std::abs(a.t - b.t) > 1e-9 * a.t) {
+                    EXPECT_EQ(a.element, b.element);
+                }
+            }
+            EXPECT_NEAR(a.t, b.t, 1e-12 * a.t);
+            // A shadow ray stopping just short of the hit is not occluded by it, just past it is.
+            EXPECT_EQ(tested.occluded(ray, a.t * (1 + leeway.occlusion_margin)), true);
+        }
+    }
+    EXPECT_GT(hits, static_cast<int>(rays.size()) / 10);  // the test means something only if rays hit
 }
 
 }  // namespace glint::test

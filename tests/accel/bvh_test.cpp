@@ -12,55 +12,11 @@
 namespace glint {
 namespace {
 
+using test::expect_same_hits;
+using test::pointers;
 using test::random_direction;
 using test::random_in_box;
-
-std::vector<const Shape*> pointers(const std::vector<std::unique_ptr<Shape>>& shapes) {
-    std::vector<const Shape*> out;
-    for (const auto& s : shapes) {
-        out.push_back(s.get());
-    }
-    return out;
-}
-
-// Rays from random points around `box`, aimed at random points inside it (so most of them hit).
-std::vector<Ray> rays_into(const Bounds3& box, int count, std::uint64_t seed) {
-    std::mt19937_64 rng(seed);
-    const Vec3 margin = box.extent();
-    std::vector<Ray> rays;
-    for (int i = 0; i < count; ++i) {
-        const Vec3 origin = random_in_box(rng, box.lo - margin, box.hi + margin);
-        const Vec3 target = random_in_box(rng, box.lo, box.hi);
-        rays.push_back({origin, target - origin});
-    }
-    return rays;
-}
-
-// Compares two accelerators on `rays`: same hit or miss, same primitive and element, same t.
-// hit.element is compared only where it means something: on meshes.
-void expect_same_hits(const Accelerator& reference, const Accelerator& tested, const std::vector<Ray>& rays,
-                      const std::vector<const Shape*>& shapes) {
-    int hits = 0;
-    for (const Ray& ray : rays) {
-        Hit a, b;
-        const bool found_a = reference.intersect(ray, kInf, a);
-        const bool found_b = tested.intersect(ray, kInf, b);
-        ASSERT_EQ(found_a, found_b) << "ray " << ray.origin << " + t " << ray.direction;
-        EXPECT_EQ(reference.occluded(ray, kInf), found_a);
-        EXPECT_EQ(tested.occluded(ray, kInf), found_b);
-        if (found_a) {
-            ++hits;
-            EXPECT_EQ(a.primitive, b.primitive);
-            if (dynamic_cast<const Mesh*>(shapes[a.primitive]) != nullptr) {
-                EXPECT_EQ(a.element, b.element);
-            }
-            EXPECT_NEAR(a.t, b.t, 1e-12 * a.t);
-            // A shadow ray stopping just short of the hit is not occluded by it, just past it is.
-            EXPECT_EQ(tested.occluded(ray, a.t * (1 + 1e-9)), true);
-        }
-    }
-    EXPECT_GT(hits, static_cast<int>(rays.size()) / 10);  // the test means something only if rays hit
-}
+using test::rays_into;
 
 TEST(Bvh, RandomSpheresGiveTheListsHits) {
     const auto shapes = test::random_spheres(2000, 7);
