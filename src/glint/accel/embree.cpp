@@ -89,7 +89,10 @@ RTCRay embree_ray(const Ray& ray, double t_max) {
     r.dir_x = static_cast<float>(ray.direction.x);
     r.dir_y = static_cast<float>(ray.direction.y);
     r.dir_z = static_cast<float>(ray.direction.z);
-    r.tnear = 0;
+    // Embree works in float: the origin alone is rounded by half a float ulp, so a ray leaving a surface
+    // (offset only for double precision) could hit that surface again. Start it a few float ulps of
+    // the origin's size along, in the ray's units. (The BVH needs no such start: it works in double.)
+    r.tnear = static_cast<float>(8 * 0x1p-24 * max_component(abs(ray.origin)) / length(ray.direction));
     r.tfar = round_up(t_max);
     r.mask = 0xffffffffu;
     r.flags = 0;
