@@ -21,6 +21,7 @@
 #include <cstring>
 #include <limits>
 #include <span>
+#include <type_traits>
 #include <vector>
 
 #include "glint/core/bounds.hpp"
@@ -66,24 +67,43 @@ class WideBvh {
     static void force_scalar_traversal(bool on) { scalar_forced().store(on); }
     static bool cpu_has_avx2();
 
-    // Nearest hit. `leaf(first, count, t_max)` tests primitives [first, first + count) for hits with
-    // t in (0, t_max), lowers t_max to the nearest one found and returns whether it found any.
+    // Nearest hit. `leaf(first, count, t_max, avx2)` tests primitives [first, first + count) for hits
+    // with t in (0, t_max), lowers t_max to the nearest one found and returns whether it found any.
+    // `avx2` is std::true_type when called from the AVX2 traversal (the leaf may then use AVX2 too).
     template <class Leaf>
     bool intersect(const Ray& ray, double& t_max, Leaf&& leaf) const;
-    // Any hit: `leaf(first, count, t_max)` returns whether any of the primitives is hit before t_max.
+    // Any hit: `leaf(first, count, t_max, avx2)` returns whether any primitive is hit before t_max.
     template <class Leaf>
     bool occluded(const Ray& ray, double t_max, Leaf&& leaf) const;
 
     // A ray prepared for the box tests (public for the node tests in bvh_detail).
     struct TraversalRay;
 
-  private:
+      // Lets the owner re-lay its leaves out: `f(first, count)` returns the new `first` of each leaf
+    // (the mesh packs its leaves into blocks of four triangles).
+    template <class F>
+    void remap_leaves(F&& f) {
+        for (WideBvhNode& node : nodes_) {
+            for (int c = 0; c < WideBvhNode::kWidth; ++c) {
+                if (node.count[c] > 0) {
+                    node.child[c] = f(node.child[c], node.count[c]);
+                }
+            }
+        }
+    }
+
+private:
     static std::atomic<bool>& scalar_forced() {
         static std::atomic<bool> forced{false};
         return forced;
     }
     template <bool kAnyHit, class NodeTest, class Leaf>
     bool traverse(const Ray& ray, double& t_max, Leaf& leaf) const;
+#ifdef GLINT_BVH_HAVE_AVX2_PATH
+    // The same loop compiled for AVX2, so that the node test and the owner's leaf test are inlined.
+    template <bool kAnyHit, class Leaf>
+    bool traverse_avx2(const Ray& ray, double& t_max, Leaf& leaf) const;
+#endif
 
     std::vector<WideBvhNode> nodes_;  // nodes_[0] is the root (when there are primitives)
     std::vector<std::uint32_t> order_;
@@ -133,12 +153,14 @@ inline const float* plane(const WideBvhNode& node, int offset) {
 
 // Which of the node's 8 boxes the ray enters before t_far (bit i for child i), and where.
 struct ScalarNodeTest {
+    static constexpr bool kAvx2 = false;
     static unsigned hits(const WideBvhNode& node, const WideBvh::TraversalRay& r, float t_far,
                          float* t_near_out);
 };
 
 #ifdef GLINT_BVH_HAVE_AVX2_PATH
 struct Avx2NodeTest {
+    static constexpr bool kAvx2 = true;
     __attribute__((target("avx2,fma"))) static inline unsigned hits(const WideBvhNode& node,
                                                                     const WideBvh::TraversalRay& r,
                                                                     float t_far, float* t_near_out);
@@ -210,7 +232,7 @@ __attribute__((target("avx2,fma"))) inline unsigned bvh_detail::Avx2NodeTest::hi
 #endif
 
 template <bool kAnyHit, class NodeTest, class Leaf>
-inline bool WideBvh::traverse(const Ray& ray, double& t_max, Leaf& leaf) const {
+__attribute__((always_inline)) inline bool WideBvh::traverse(const Ray& ray, double& t_max, Leaf& leaf) const {
     using bvh_detail::StackEntry;
     if (nodes_.empty()) {
         return false;
@@ -230,7 +252,7 @@ inline bool WideBvh::traverse(const Ray& ray, double& t_max, Leaf& leaf) const {
             continue;  // a nearer hit was found after this entry was pushed
         }
         if (entry.count > 0) {
-            if (leaf(entry.child, entry.count, t_max)) {
+            if (leaf(entry.child, entry.count, t_max, std::bool_constant<NodeTest::kAvx2>{})) {
                 if constexpr (kAnyHit) {
                     return true;
                 }
@@ -258,11 +280,18 @@ inline bool WideBvh::traverse(const Ray& ray, double& t_max, Leaf& leaf) const {
     return found;
 }
 
+#ifdef GLINT_BVH_HAVE_AVX2_PATH
+template <bool kAnyHit, class Leaf>
+__attribute__((target("avx2,fma"))) bool WideBvh::traverse_avx2(const Ray& ray, double& t_max, Leaf& leaf) const {
+    return traverse<kAnyHit, bvh_detail::Avx2NodeTest>(ray, t_max, leaf);
+}
+#endif
+
 template <class Leaf>
 bool WideBvh::intersect(const Ray& ray, double& t_max, Leaf&& leaf) const {
 #ifdef GLINT_BVH_HAVE_AVX2_PATH
     if (uses_avx2()) {
-        return traverse<false, bvh_detail::Avx2NodeTest>(ray, t_max, leaf);
+        return traverse_avx2<false>(ray, t_max, leaf);
     }
 #endif
     return traverse<false, bvh_detail::ScalarNodeTest>(ray, t_max, leaf);
@@ -272,7 +301,7 @@ template <class Leaf>
 bool WideBvh::occluded(const Ray& ray, double t_max, Leaf&& leaf) const {
 #ifdef GLINT_BVH_HAVE_AVX2_PATH
     if (uses_avx2()) {
-        return traverse<true, bvh_detail::Avx2NodeTest>(ray, t_max, leaf);
+        return traverse_avx2<true>(ray, t_max, leaf);
     }
 #endif
     return traverse<true, bvh_detail::ScalarNodeTest>(ray, t_max, leaf);

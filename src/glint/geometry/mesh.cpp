@@ -66,6 +66,18 @@ Mesh::Mesh(MeshData data) : positions_(std::move(data.positions)), normals_(std:
         ordered[i] = triangles_[bvh_.primitive_order()[i]];
     }
     triangles_ = std::move(ordered);
+    bvh_.remap_leaves([&](std::uint32_t first, std::uint32_t count) {
+        const auto block_start = static_cast<std::uint32_t>(blocks_.size());
+        for (std::uint32_t i = 0; i < count; ++i) {
+            if (i % TriangleBlock::kLanes == 0) {
+                blocks_.emplace_back();
+            }
+            const auto& tri = triangles_[first + i];
+            blocks_.back().set(static_cast<int>(i % TriangleBlock::kLanes), first + i, positions_[tri[0]],
+                               positions_[tri[1]], positions_[tri[2]]);
+        }
+        return block_start;
+    });
     area_cdf_.resize(triangles_.size());
     double sum = 0;
     for (std::size_t i = 0; i < triangles_.size(); ++i) {
@@ -79,7 +91,7 @@ Mesh::Mesh(MeshData data) : positions_(std::move(data.positions)), normals_(std:
 
 std::size_t Mesh::memory_bytes() const {
     return positions_.capacity() * sizeof(Vec3) + normals_.capacity() * sizeof(Vec3) +
-           triangles_.capacity() * sizeof(triangles_[0]) + area_cdf_.capacity() * sizeof(double) +
+           triangles_.capacity() * sizeof(triangles_[0]) + blocks_.capacity() * sizeof(TriangleBlock) + area_cdf_.capacity() * sizeof(double) +
            bvh_.memory_bytes();
 }
 
@@ -112,17 +124,25 @@ bool Mesh::intersect(const Ray& ray, double t_max, Hit& hit) const {
     const WatertightRay wray(ray);
     TriangleHit best;
     std::uint32_t best_index = 0;
-    const Vec3* positions = positions_.data();
-    const auto* triangles = triangles_.data();
+    const TriangleBlock* blocks = blocks_.data();
     const bool found =
-        bvh_.intersect(ray, t_max, [&](std::uint32_t first, std::uint32_t count, double& t_limit) {
+        bvh_.intersect(ray, t_max, [&](std::uint32_t first, std::uint32_t count, double& t_limit, auto avx2) {
             bool any = false;
-            for (std::uint32_t i = first; i < first + count; ++i) {
-                const auto& tri = triangles[i];
-                if (glint::intersect_triangle(wray, positions[tri[0]], positions[tri[1]], positions[tri[2]],
-                                              t_limit, best)) {
+            const std::uint32_t end = first + (count + TriangleBlock::kLanes - 1) / TriangleBlock::kLanes;
+            for (std::uint32_t b = first; b < end; ++b) {
+                int lane = -1;
+#if defined(__x86_64__) || defined(__i386__)
+                if constexpr (decltype(avx2)::value) {
+                    lane = intersect_block_avx2(wray, blocks[b], t_limit, best);
+                } else {
+                    lane = intersect_block_scalar(wray, blocks[b], t_limit, best);
+                }
+#else
+                lane = intersect_block_scalar(wray, blocks[b], t_limit, best);
+#endif
+                if (lane >= 0) {
                     t_limit = best.t;
-                    best_index = i;
+                    best_index = blocks[b].element[lane];
                     any = true;
                 }
             }
@@ -136,14 +156,20 @@ bool Mesh::intersect(const Ray& ray, double t_max, Hit& hit) const {
 
 bool Mesh::occluded(const Ray& ray, double t_max) const {
     const WatertightRay wray(ray);
-    const Vec3* positions = positions_.data();
-    const auto* triangles = triangles_.data();
-    return bvh_.occluded(ray, t_max, [&](std::uint32_t first, std::uint32_t count, double t_limit) {
+    const TriangleBlock* blocks = blocks_.data();
+    return bvh_.occluded(ray, t_max, [&](std::uint32_t first, std::uint32_t count, double t_limit, auto avx2) {
         TriangleHit unused;
-        for (std::uint32_t i = first; i < first + count; ++i) {
-            const auto& tri = triangles[i];
-            if (glint::intersect_triangle(wray, positions[tri[0]], positions[tri[1]], positions[tri[2]],
-                                          t_limit, unused)) {
+        const std::uint32_t end = first + (count + TriangleBlock::kLanes - 1) / TriangleBlock::kLanes;
+        for (std::uint32_t b = first; b < end; ++b) {
+#if defined(__x86_64__) || defined(__i386__)
+            if constexpr (decltype(avx2)::value) {
+                if (intersect_block_avx2(wray, blocks[b], t_limit, unused) >= 0) {
+                    return true;
+                }
+                continue;
+            }
+#endif
+            if (intersect_block_scalar(wray, blocks[b], t_limit, unused) >= 0) {
                 return true;
             }
         }
