@@ -35,17 +35,18 @@ bool BvhAccelerator::intersect(const Ray& ray, double t_max, Hit& hit) const {
             found = true;
         }
     }
-    found |= bvh_.intersect(ray, t_max, [&](std::uint32_t first, std::uint32_t count, double& t_limit, auto /*avx2*/) {
-        bool any = false;
-        for (std::uint32_t i = first; i < first + count; ++i) {
-            if (shapes_[i]->intersect(ray, t_limit, hit)) {
-                t_limit = hit.t;
-                hit.primitive = shape_index_[i];
-                any = true;
-            }
-        }
-        return any;
-    });
+    found |= bvh_.intersect(ray, t_max,
+                            [&](std::uint32_t first, std::uint32_t count, double& t_limit, auto /*avx2*/) {
+                                bool any = false;
+                                for (std::uint32_t i = first; i < first + count; ++i) {
+                                    if (shapes_[i]->intersect(ray, t_limit, hit)) {
+                                        t_limit = hit.t;
+                                        hit.primitive = shape_index_[i];
+                                        any = true;
+                                    }
+                                }
+                                return any;
+                            });
     return found;
 }
 
@@ -55,14 +56,15 @@ bool BvhAccelerator::occluded(const Ray& ray, double t_max) const {
             return true;
         }
     }
-    return bvh_.occluded(ray, t_max, [&](std::uint32_t first, std::uint32_t count, double t_limit, auto /*avx2*/) {
-        for (std::uint32_t i = first; i < first + count; ++i) {
-            if (shapes_[i]->occluded(ray, t_limit)) {
-                return true;
-            }
-        }
-        return false;
-    });
+    return bvh_.occluded(ray, t_max,
+                         [&](std::uint32_t first, std::uint32_t count, double t_limit, auto /*avx2*/) {
+                             for (std::uint32_t i = first; i < first + count; ++i) {
+                                 if (shapes_[i]->occluded(ray, t_limit)) {
+                                     return true;
+                                 }
+                             }
+                             return false;
+                         });
 }
 
 }  // namespace glint

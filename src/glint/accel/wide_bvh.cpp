@@ -155,6 +155,12 @@ class Builder {
         return fill(range.begin, range.end, Bins{});
     }
 
+    // What testing `count` primitives costs, in primitive tests.
+    double tests(std::size_t count) const {
+        const auto group = static_cast<std::size_t>(std::max(options_.primitives_per_test, 1));
+        return static_cast<double>((count + group - 1) / group);
+    }
+
     // Splits `range` into two, or marks it a leaf. Returns false if it became a leaf.
     bool split(Range& range, Range& left, Range& right) const {
         const std::size_t n = range.size();
@@ -190,14 +196,14 @@ class Builder {
                 for (int i = kBins - 1; i > 0; --i) {
                     acc.grow(bins[axis][i].bounds);
                     count += bins[axis][i].count;
-                    right_cost[i] = half_area(acc) * static_cast<double>(count);
+                    right_cost[i] = half_area(acc) * tests(count);
                 }
                 acc = Bounds3{};
                 count = 0;
                 for (int i = 0; i < kBins - 1; ++i) {
                     acc.grow(bins[axis][i].bounds);
                     count += bins[axis][i].count;
-                    const double cost = half_area(acc) * static_cast<double>(count) + right_cost[i + 1];
+                    const double cost = half_area(acc) * tests(count) + right_cost[i + 1];
                     if (count > 0 && count < n && cost < best_cost) {
                         best_cost = cost;
                         best_axis = axis;
@@ -206,9 +212,8 @@ class Builder {
                 }
             }
             const double area = half_area(range.bounds);
-            const double split_cost =
-                options_.traversal_cost + (area > 0 ? best_cost / area : static_cast<double>(n));
-            const double leaf_cost = static_cast<double>(n);
+            const double split_cost = options_.traversal_cost + (area > 0 ? best_cost / area : tests(n));
+            const double leaf_cost = tests(n);
             const bool fits_leaf = n <= static_cast<std::size_t>(options_.max_leaf_size);
             if (best_axis < 0 || (fits_leaf && leaf_cost <= split_cost)) {
                 range.is_leaf = true;

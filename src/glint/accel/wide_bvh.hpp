@@ -45,7 +45,10 @@ struct alignas(32) WideBvhNode {
 
 struct BvhBuildOptions {
     int max_leaf_size = 4;      // leaves hold at most this many primitives, unless they cannot be split
-    double traversal_cost = 1;  // the SAH's cost of visiting a node, relative to testing one primitive
+    double traversal_cost = 1;  // the SAH's cost of visiting a node, relative to one primitive test
+    // Primitives tested together at the same cost (the mesh tests blocks of 4 triangles at once): the
+    // SAH counts a leaf of n primitives as ⌈n / group⌉ tests, which favours full groups.
+    int primitives_per_test = 1;
 };
 
 class WideBvh {
@@ -79,7 +82,7 @@ class WideBvh {
     // A ray prepared for the box tests (public for the node tests in bvh_detail).
     struct TraversalRay;
 
-      // Lets the owner re-lay its leaves out: `f(first, count)` returns the new `first` of each leaf
+    // Lets the owner re-lay its leaves out: `f(first, count)` returns the new `first` of each leaf
     // (the mesh packs its leaves into blocks of four triangles).
     template <class F>
     void remap_leaves(F&& f) {
@@ -92,7 +95,7 @@ class WideBvh {
         }
     }
 
-private:
+  private:
     static std::atomic<bool>& scalar_forced() {
         static std::atomic<bool> forced{false};
         return forced;
@@ -232,7 +235,8 @@ __attribute__((target("avx2,fma"))) inline unsigned bvh_detail::Avx2NodeTest::hi
 #endif
 
 template <bool kAnyHit, class NodeTest, class Leaf>
-__attribute__((always_inline)) inline bool WideBvh::traverse(const Ray& ray, double& t_max, Leaf& leaf) const {
+__attribute__((always_inline)) inline bool WideBvh::traverse(const Ray& ray, double& t_max,
+                                                             Leaf& leaf) const {
     using bvh_detail::StackEntry;
     if (nodes_.empty()) {
         return false;
@@ -282,7 +286,8 @@ __attribute__((always_inline)) inline bool WideBvh::traverse(const Ray& ray, dou
 
 #ifdef GLINT_BVH_HAVE_AVX2_PATH
 template <bool kAnyHit, class Leaf>
-__attribute__((target("avx2,fma"))) bool WideBvh::traverse_avx2(const Ray& ray, double& t_max, Leaf& leaf) const {
+__attribute__((target("avx2,fma"))) bool WideBvh::traverse_avx2(const Ray& ray, double& t_max,
+                                                                Leaf& leaf) const {
     return traverse<kAnyHit, bvh_detail::Avx2NodeTest>(ray, t_max, leaf);
 }
 #endif

@@ -59,7 +59,10 @@ Mesh::Mesh(MeshData data) : positions_(std::move(data.positions)), normals_(std:
             boxes[i].grow(positions_[v]);
         }
     }
-    bvh_.build(boxes);
+    BvhBuildOptions options;
+    options.max_leaf_size = 2 * TriangleBlock::kLanes;
+    options.primitives_per_test = TriangleBlock::kLanes;
+    bvh_.build(boxes, options);
     // Store the triangles in BVH order, so that a leaf is a contiguous run of the array.
     std::vector<std::array<std::uint32_t, 3>> ordered(triangles_.size());
     for (std::size_t i = 0; i < ordered.size(); ++i) {
@@ -78,6 +81,7 @@ Mesh::Mesh(MeshData data) : positions_(std::move(data.positions)), normals_(std:
         }
         return block_start;
     });
+    blocks_.shrink_to_fit();
     area_cdf_.resize(triangles_.size());
     double sum = 0;
     for (std::size_t i = 0; i < triangles_.size(); ++i) {
@@ -91,8 +95,8 @@ Mesh::Mesh(MeshData data) : positions_(std::move(data.positions)), normals_(std:
 
 std::size_t Mesh::memory_bytes() const {
     return positions_.capacity() * sizeof(Vec3) + normals_.capacity() * sizeof(Vec3) +
-           triangles_.capacity() * sizeof(triangles_[0]) + blocks_.capacity() * sizeof(TriangleBlock) + area_cdf_.capacity() * sizeof(double) +
-           bvh_.memory_bytes();
+           triangles_.capacity() * sizeof(triangles_[0]) + blocks_.capacity() * sizeof(TriangleBlock) +
+           area_cdf_.capacity() * sizeof(double) + bvh_.memory_bytes();
 }
 
 void Mesh::fill_hit(std::uint32_t index, const Ray& ray, double t, double b0, double b1, double b2,
@@ -157,24 +161,25 @@ bool Mesh::intersect(const Ray& ray, double t_max, Hit& hit) const {
 bool Mesh::occluded(const Ray& ray, double t_max) const {
     const WatertightRay wray(ray);
     const TriangleBlock* blocks = blocks_.data();
-    return bvh_.occluded(ray, t_max, [&](std::uint32_t first, std::uint32_t count, double t_limit, auto avx2) {
-        TriangleHit unused;
-        const std::uint32_t end = first + (count + TriangleBlock::kLanes - 1) / TriangleBlock::kLanes;
-        for (std::uint32_t b = first; b < end; ++b) {
+    return bvh_.occluded(
+        ray, t_max, [&](std::uint32_t first, std::uint32_t count, double t_limit, auto avx2) {
+            TriangleHit unused;
+            const std::uint32_t end = first + (count + TriangleBlock::kLanes - 1) / TriangleBlock::kLanes;
+            for (std::uint32_t b = first; b < end; ++b) {
 #if defined(__x86_64__) || defined(__i386__)
-            if constexpr (decltype(avx2)::value) {
-                if (intersect_block_avx2(wray, blocks[b], t_limit, unused) >= 0) {
+                if constexpr (decltype(avx2)::value) {
+                    if (intersect_block_avx2(wray, blocks[b], t_limit, unused) >= 0) {
+                        return true;
+                    }
+                    continue;
+                }
+#endif
+                if (intersect_block_scalar(wray, blocks[b], t_limit, unused) >= 0) {
                     return true;
                 }
-                continue;
             }
-#endif
-            if (intersect_block_scalar(wray, blocks[b], t_limit, unused) >= 0) {
-                return true;
-            }
-        }
-        return false;
-    });
+            return false;
+        });
 }
 
 bool Mesh::intersect_triangle(std::uint32_t index, const Ray& ray, double t_max, Hit& hit) const {

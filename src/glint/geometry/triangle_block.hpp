@@ -36,10 +36,12 @@ struct alignas(32) TriangleBlock {
 };
 
 // The nearest lane hit with t in (0, t_max), or −1; fills `out` for it.
-inline int intersect_block_scalar(const WatertightRay& ray, const TriangleBlock& block, double t_max, TriangleHit& out) {
+inline int intersect_block_scalar(const WatertightRay& ray, const TriangleBlock& block, double t_max,
+                                  TriangleHit& out) {
     int nearest = -1;
     for (int lane = 0; lane < TriangleBlock::kLanes; ++lane) {
-        if (intersect_triangle(ray, block.vertex(0, lane), block.vertex(1, lane), block.vertex(2, lane), t_max, out)) {
+        if (intersect_triangle(ray, block.vertex(0, lane), block.vertex(1, lane), block.vertex(2, lane),
+                               t_max, out)) {
             t_max = out.t;
             nearest = lane;
         }
@@ -49,8 +51,9 @@ inline int intersect_block_scalar(const WatertightRay& ray, const TriangleBlock&
 
 #if defined(__x86_64__) || defined(__i386__)
 // The same answer as intersect_block_scalar, four lanes at a time.
-__attribute__((target("avx2"))) inline int intersect_block_avx2(const WatertightRay& ray, const TriangleBlock& block,
-                                                               double t_max, TriangleHit& out) {
+__attribute__((target("avx2"))) inline int intersect_block_avx2(const WatertightRay& ray,
+                                                                const TriangleBlock& block, double t_max,
+                                                                TriangleHit& out) {
     const __m256d ox = _mm256_set1_pd(ray.origin[ray.kx]);
     const __m256d oy = _mm256_set1_pd(ray.origin[ray.ky]);
     const __m256d oz = _mm256_set1_pd(ray.origin[ray.kz]);
@@ -71,13 +74,15 @@ __attribute__((target("avx2"))) inline int intersect_block_avx2(const Watertight
     const __m256d v = _mm256_sub_pd(_mm256_mul_pd(px[0], py[2]), _mm256_mul_pd(py[0], px[2]));
     const __m256d w = _mm256_sub_pd(_mm256_mul_pd(px[1], py[0]), _mm256_mul_pd(py[1], px[0]));
     const __m256d zero = _mm256_setzero_pd();
-    const __m256d negative = _mm256_or_pd(_mm256_or_pd(_mm256_cmp_pd(u, zero, _CMP_LT_OQ), _mm256_cmp_pd(v, zero, _CMP_LT_OQ)),
-                                          _mm256_cmp_pd(w, zero, _CMP_LT_OQ));
-    const __m256d positive = _mm256_or_pd(_mm256_or_pd(_mm256_cmp_pd(u, zero, _CMP_GT_OQ), _mm256_cmp_pd(v, zero, _CMP_GT_OQ)),
-                                          _mm256_cmp_pd(w, zero, _CMP_GT_OQ));
+    const __m256d negative =
+        _mm256_or_pd(_mm256_or_pd(_mm256_cmp_pd(u, zero, _CMP_LT_OQ), _mm256_cmp_pd(v, zero, _CMP_LT_OQ)),
+                     _mm256_cmp_pd(w, zero, _CMP_LT_OQ));
+    const __m256d positive =
+        _mm256_or_pd(_mm256_or_pd(_mm256_cmp_pd(u, zero, _CMP_GT_OQ), _mm256_cmp_pd(v, zero, _CMP_GT_OQ)),
+                     _mm256_cmp_pd(w, zero, _CMP_GT_OQ));
     const __m256d det = _mm256_add_pd(_mm256_add_pd(u, v), w);
-    const __m256d t_scaled =
-        _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(u, pz[0]), _mm256_mul_pd(v, pz[1])), _mm256_mul_pd(w, pz[2]));
+    const __m256d t_scaled = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(u, pz[0]), _mm256_mul_pd(v, pz[1])),
+                                           _mm256_mul_pd(w, pz[2]));
     // Flip both by det's sign (the scalar test negates them when det < 0).
     const __m256d sign = _mm256_and_pd(det, _mm256_set1_pd(-0.0));
     const __m256d det_abs = _mm256_xor_pd(det, sign);
@@ -91,7 +96,8 @@ __attribute__((target("avx2"))) inline int intersect_block_avx2(const Watertight
         return -1;
     }
     const __m256d t = _mm256_mul_pd(t_abs, _mm256_div_pd(_mm256_set1_pd(1.0), det_abs));
-    ok = _mm256_and_pd(ok, _mm256_and_pd(_mm256_cmp_pd(t, zero, _CMP_GT_OQ), _mm256_cmp_pd(t, limit, _CMP_LT_OQ)));
+    ok = _mm256_and_pd(
+        ok, _mm256_and_pd(_mm256_cmp_pd(t, zero, _CMP_GT_OQ), _mm256_cmp_pd(t, limit, _CMP_LT_OQ)));
     mask = _mm256_movemask_pd(ok);
     if (mask == 0) {
         return -1;
@@ -107,7 +113,8 @@ __attribute__((target("avx2"))) inline int intersect_block_avx2(const Watertight
         }
     }
     // The scalar test gives the same t and the barycentric coordinates.
-    if (!intersect_triangle(ray, block.vertex(0, nearest), block.vertex(1, nearest), block.vertex(2, nearest), t_max, out)) {
+    if (!intersect_triangle(ray, block.vertex(0, nearest), block.vertex(1, nearest), block.vertex(2, nearest),
+                            t_max, out)) {
         return -1;  // cannot happen: the same operations in the same order
     }
     return nearest;
