@@ -63,10 +63,7 @@ float round_up(double v) {
 class Builder {
   public:
     Builder(std::span<const Bounds3> boxes, const BvhBuildOptions& options, std::vector<std::uint32_t>& order)
-        : boxes_(boxes), options_(options), order_(order), centroids_(boxes.size()) {
-        tbb::parallel_for(std::size_t{0}, boxes.size(),
-                          [&](std::size_t i) { centroids_[i] = boxes[i].center(); });
-    }
+        : boxes_(boxes), options_(options), order_(order) {}
 
     std::vector<WideBvhNode> build() {
         Range root{0, boxes_.size(), {}, {}, 0, false};
@@ -91,7 +88,7 @@ class Builder {
         auto reduce = [&](std::size_t b, std::size_t e, std::pair<Bounds3, Bounds3> acc) {
             for (std::size_t i = b; i < e; ++i) {
                 acc.first.grow(boxes_[order_[i]]);
-                acc.second.grow(centroids_[order_[i]]);
+                acc.second.grow(boxes_[order_[i]].center());
             }
             return acc;
         };
@@ -115,20 +112,34 @@ class Builder {
         range.centroid_bounds = result.second;
     }
 
-    static int bin_of(const Vec3& centroid, const Bounds3& cb, int axis) {
-        const double extent = cb.hi[axis] - cb.lo[axis];
-        const int b = static_cast<int>(kBins * (centroid[axis] - cb.lo[axis]) / extent);
-        return std::clamp(b, 0, kBins - 1);
-    }
+    // Which bin a centroid falls in, per axis, over the centroid bounds (the same function for binning
+    // and for partitioning, so that both agree). Centroids are box centres, recomputed rather than
+    // stored: a pass over the boxes is cheaper than allocating another array of them.
+    struct Binning {
+        Vec3 lo;
+        double scale[3] = {0, 0, 0};  // bins per unit length; 0 on an axis with no extent
+        explicit Binning(const Bounds3& cb) : lo(cb.lo) {
+            for (int axis = 0; axis < 3; ++axis) {
+                const double extent = cb.hi[axis] - cb.lo[axis];
+                const double bins_per_unit = kBins / extent;
+                scale[axis] = extent > 0 && std::isfinite(bins_per_unit) ? bins_per_unit : 0;
+            }
+        }
+        int bin(const Vec3& centroid, int axis) const {
+            const int b = static_cast<int>((centroid[axis] - lo[axis]) * scale[axis]);
+            return std::clamp(b, 0, kBins - 1);
+        }
+    };
 
     Bins fill_bins(const Range& range) const {
-        const Bounds3& cb = range.centroid_bounds;
+        const Binning binning(range.centroid_bounds);
         auto fill = [&](std::size_t b, std::size_t e, Bins bins) {
             for (std::size_t i = b; i < e; ++i) {
                 const std::uint32_t p = order_[i];
+                const Vec3 centroid = boxes_[p].center();
                 for (int axis = 0; axis < 3; ++axis) {
-                    if (cb.hi[axis] > cb.lo[axis]) {
-                        Bin& bin = bins[axis][bin_of(centroids_[p], cb, axis)];
+                    if (binning.scale[axis] > 0) {
+                        Bin& bin = bins[axis][binning.bin(centroid, axis)];
                         bin.bounds.grow(boxes_[p]);
                         ++bin.count;
                     }
@@ -175,11 +186,12 @@ class Builder {
             const Vec3 e = range.centroid_bounds.extent();
             const int axis = e.x > e.y ? (e.x > e.z ? 0 : 2) : (e.y > e.z ? 1 : 2);
             mid = range.begin + n / 2;
-            std::nth_element(
-                order_.begin() + static_cast<std::ptrdiff_t>(range.begin),
-                order_.begin() + static_cast<std::ptrdiff_t>(mid),
-                order_.begin() + static_cast<std::ptrdiff_t>(range.end),
-                [&](std::uint32_t a, std::uint32_t b) { return centroids_[a][axis] < centroids_[b][axis]; });
+            std::nth_element(order_.begin() + static_cast<std::ptrdiff_t>(range.begin),
+                             order_.begin() + static_cast<std::ptrdiff_t>(mid),
+                             order_.begin() + static_cast<std::ptrdiff_t>(range.end),
+                             [&](std::uint32_t a, std::uint32_t b) {
+                                 return boxes_[a].center()[axis] < boxes_[b].center()[axis];
+                             });
         } else {
             const Bins bins = fill_bins(range);
             double best_cost = kInf;
@@ -219,11 +231,11 @@ class Builder {
                 range.is_leaf = true;
                 return false;
             }
-            const Bounds3& cb = range.centroid_bounds;
+            const Binning binning(range.centroid_bounds);
             const auto middle = std::partition(
                 order_.begin() + static_cast<std::ptrdiff_t>(range.begin),
                 order_.begin() + static_cast<std::ptrdiff_t>(range.end),
-                [&](std::uint32_t p) { return bin_of(centroids_[p], cb, best_axis) <= best_bin; });
+                [&](std::uint32_t p) { return binning.bin(boxes_[p].center(), best_axis) <= best_bin; });
             mid = static_cast<std::size_t>(middle - order_.begin());
             if (mid == range.begin || mid == range.end) {
                 range.is_leaf = true;  // cannot happen with consistent binning; a leaf is still correct
@@ -317,7 +329,6 @@ class Builder {
     std::span<const Bounds3> boxes_;
     BvhBuildOptions options_;
     std::vector<std::uint32_t>& order_;
-    std::vector<Vec3> centroids_;
     std::mutex mutex_;
     // A deque keeps nodes in place while other tasks append; copied to a vector at the end.
     std::deque<WideBvhNode> nodes_;
