@@ -196,6 +196,26 @@ TEST(Bvh, MeshesAndSpheresTogetherGiveTheListsHits) {
     expect_same_hits(list, bvh, rays_into(Bounds3{{-10, -10, -10}, {10, 10, 10}}, 3000, 4), ptrs);
 }
 
+TEST(Bvh, CoordinatesBeyondFloatRangeOrTinyStillHit) {
+    // The nodes are float: boxes beyond float's range saturate outwards, tiny ones keep their digits.
+    for (double scale : {1e-30, 1e40}) {
+        std::vector<std::unique_ptr<Shape>> shapes;
+        for (int i = 0; i < 20; ++i) {
+            shapes.push_back(std::make_unique<Sphere>(Vec3{scale * (3 * i + 10), scale, 0}, scale));
+        }
+        const auto ptrs = pointers(shapes);
+        const BvhAccelerator bvh(ptrs);
+        for (int i = 0; i < 20; ++i) {
+            Hit hit;
+            const Ray ray{{scale * (3 * i + 10), 5 * scale, 0}, {0, -1, 0}};
+            ASSERT_TRUE(bvh.intersect(ray, kInf, hit)) << scale << " " << i;
+            EXPECT_EQ(hit.primitive, static_cast<std::uint32_t>(i));
+            EXPECT_NEAR(hit.t, 3 * scale, 1e-12 * scale);
+            EXPECT_TRUE(bvh.occluded(ray, kInf));
+        }
+    }
+}
+
 TEST(Bvh, ScalarTraversalGivesTheSameHitsAsAvx2) {
     auto shapes = test::random_spheres(500, 8);
     shapes.push_back(std::make_unique<Mesh>(test::tessellated_sphere(4, 3.0, {1, 2, 3})));

@@ -6,6 +6,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "glint/accel/wide_bvh.hpp"
 #include "glint/geometry/mesh.hpp"
 
 namespace glint {
@@ -22,7 +23,7 @@ struct QueryContext {
 
 // The smallest float not below t: Embree's float bounds must not cut off a double hit at t.
 float round_up(double t) {
-    float f = static_cast<float>(t);
+    float f = saturate_to_float(t);
     if (static_cast<double>(f) < t) {
         f = std::nextafter(f, std::numeric_limits<float>::infinity());
     }
@@ -37,12 +38,12 @@ void shape_bounds(const RTCBoundsFunctionArguments* args) {
     const Bounds3 b = static_cast<const Shape*>(args->geometryUserPtr)->bounds();
     constexpr float kInfinity = std::numeric_limits<float>::infinity();
     // Round outwards, so the float box holds the double one.
-    args->bounds_o->lower_x = std::nextafter(static_cast<float>(b.lo.x), -kInfinity);
-    args->bounds_o->lower_y = std::nextafter(static_cast<float>(b.lo.y), -kInfinity);
-    args->bounds_o->lower_z = std::nextafter(static_cast<float>(b.lo.z), -kInfinity);
-    args->bounds_o->upper_x = std::nextafter(static_cast<float>(b.hi.x), kInfinity);
-    args->bounds_o->upper_y = std::nextafter(static_cast<float>(b.hi.y), kInfinity);
-    args->bounds_o->upper_z = std::nextafter(static_cast<float>(b.hi.z), kInfinity);
+    args->bounds_o->lower_x = std::nextafter(saturate_to_float(b.lo.x), -kInfinity);
+    args->bounds_o->lower_y = std::nextafter(saturate_to_float(b.lo.y), -kInfinity);
+    args->bounds_o->lower_z = std::nextafter(saturate_to_float(b.lo.z), -kInfinity);
+    args->bounds_o->upper_x = std::nextafter(saturate_to_float(b.hi.x), kInfinity);
+    args->bounds_o->upper_y = std::nextafter(saturate_to_float(b.hi.y), kInfinity);
+    args->bounds_o->upper_z = std::nextafter(saturate_to_float(b.hi.z), kInfinity);
 }
 
 void shape_intersect(const RTCIntersectFunctionNArguments* args) {
@@ -63,9 +64,9 @@ void shape_intersect(const RTCIntersectFunctionNArguments* args) {
     rayhit->hit.primID = args->primID;
     rayhit->hit.u = 0;
     rayhit->hit.v = 0;
-    rayhit->hit.Ng_x = static_cast<float>(hit.normal.x);
-    rayhit->hit.Ng_y = static_cast<float>(hit.normal.y);
-    rayhit->hit.Ng_z = static_cast<float>(hit.normal.z);
+    rayhit->hit.Ng_x = saturate_to_float(hit.normal.x);
+    rayhit->hit.Ng_y = saturate_to_float(hit.normal.y);
+    rayhit->hit.Ng_z = saturate_to_float(hit.normal.z);
     rayhit->hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
 }
 
@@ -83,16 +84,16 @@ void shape_occluded(const RTCOccludedFunctionNArguments* args) {
 
 RTCRay embree_ray(const Ray& ray, double t_max) {
     RTCRay r{};
-    r.org_x = static_cast<float>(ray.origin.x);
-    r.org_y = static_cast<float>(ray.origin.y);
-    r.org_z = static_cast<float>(ray.origin.z);
-    r.dir_x = static_cast<float>(ray.direction.x);
-    r.dir_y = static_cast<float>(ray.direction.y);
-    r.dir_z = static_cast<float>(ray.direction.z);
+    r.org_x = saturate_to_float(ray.origin.x);
+    r.org_y = saturate_to_float(ray.origin.y);
+    r.org_z = saturate_to_float(ray.origin.z);
+    r.dir_x = saturate_to_float(ray.direction.x);
+    r.dir_y = saturate_to_float(ray.direction.y);
+    r.dir_z = saturate_to_float(ray.direction.z);
     // Embree works in float: the origin alone is rounded by half a float ulp, so a ray leaving a surface
     // (offset only for double precision) could hit that surface again. Start it a few float ulps of
     // the origin's size along, in the ray's units. (The BVH needs no such start: it works in double.)
-    r.tnear = static_cast<float>(8 * 0x1p-24 * max_component(abs(ray.origin)) / length(ray.direction));
+    r.tnear = saturate_to_float(8 * 0x1p-24 * max_component(abs(ray.origin)) / length(ray.direction));
     r.tfar = round_up(t_max);
     r.mask = 0xffffffffu;
     r.flags = 0;
@@ -130,9 +131,9 @@ EmbreeAccelerator::EmbreeAccelerator(std::span<const Shape* const> shapes)
                                                                          RTC_FORMAT_FLOAT3, 3 * sizeof(float),
                                                                          mesh->positions().size()));
             for (std::size_t v = 0; v < mesh->positions().size(); ++v) {
-                vertices[3 * v + 0] = static_cast<float>(mesh->positions()[v].x);
-                vertices[3 * v + 1] = static_cast<float>(mesh->positions()[v].y);
-                vertices[3 * v + 2] = static_cast<float>(mesh->positions()[v].z);
+                vertices[3 * v + 0] = saturate_to_float(mesh->positions()[v].x);
+                vertices[3 * v + 1] = saturate_to_float(mesh->positions()[v].y);
+                vertices[3 * v + 2] = saturate_to_float(mesh->positions()[v].z);
             }
             auto* indices = static_cast<unsigned*>(
                 rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,

@@ -46,14 +46,14 @@ using Bins = std::array<std::array<Bin, kBins>, 3>;
 // float boxes that contain the double ones: rounded outwards, then padded by a relative 2^-20 so that
 // the float slab arithmetic of traversal never culls a box the ray touches.
 float round_down(double v) {
-    float f = static_cast<float>(v);
+    float f = saturate_to_float(v);
     if (static_cast<double>(f) > v) {
         f = std::nextafter(f, -std::numeric_limits<float>::infinity());
     }
     return f;
 }
 float round_up(double v) {
-    float f = static_cast<float>(v);
+    float f = saturate_to_float(v);
     if (static_cast<double>(f) < v) {
         f = std::nextafter(f, std::numeric_limits<float>::infinity());
     }

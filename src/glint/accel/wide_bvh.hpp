@@ -34,6 +34,18 @@
 
 namespace glint {
 
+// double → float without undefined behaviour: values beyond float's range become ±infinity (NaN stays).
+inline float saturate_to_float(double x) {
+    constexpr double kMax = std::numeric_limits<float>::max();
+    if (x > kMax) {
+        return std::numeric_limits<float>::infinity();
+    }
+    if (x < -kMax) {
+        return -std::numeric_limits<float>::infinity();
+    }
+    return static_cast<float>(x);
+}
+
 struct alignas(32) WideBvhNode {
     static constexpr int kWidth = 8;
     // Child boxes; an empty slot has lo = +inf and hi = −inf, which no ray hits.
@@ -131,8 +143,8 @@ struct WideBvh::TraversalRay {
             if (!(std::abs(inverse) < kHuge)) {
                 inverse = std::signbit(ray.direction[a]) ? -kHuge : kHuge;
             }
-            inv[a] = static_cast<float>(inverse);
-            origin_inv[a] = static_cast<float>(ray.origin[a] * inverse);
+            inv[a] = saturate_to_float(inverse);
+            origin_inv[a] = saturate_to_float(ray.origin[a] * inverse);
             const bool negative = inv[a] < 0;
             const int lo = static_cast<int>(a * WideBvhNode::kWidth * sizeof(float));
             const int hi = lo + static_cast<int>(3 * WideBvhNode::kWidth * sizeof(float));
@@ -146,8 +158,7 @@ namespace bvh_detail {
 
 // The float bound for a double t_max, rounded up and with a margin for the float slab arithmetic.
 inline float far_limit(double t_max) {
-    const float f = static_cast<float>(t_max * (1 + 1e-6));
-    return f;
+    return saturate_to_float(t_max * (1 + 1e-6));
 }
 
 inline const float* plane(const WideBvhNode& node, int offset) {

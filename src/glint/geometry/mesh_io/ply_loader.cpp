@@ -309,6 +309,9 @@ class PlyParser {
         if (count < 0) {
             fail_data("a list has a negative length");
         }
+        if (count > 1e9) {
+            fail_data("a list claims more than a billion items");
+        }
         if (format_ != PlyFormat::Ascii && count * static_cast<double>(type_size(property.type)) >
                                                static_cast<double>(bytes_.size() - cursor_)) {
             fail_data("a list of " + std::to_string(static_cast<long long>(count)) +
@@ -316,8 +319,8 @@ class PlyParser {
         }
         for (long long i = 0; i < static_cast<long long>(count); ++i) {
             const double value = read_value(property.type);
-            if (value != std::floor(value)) {
-                fail_data("a vertex index is not an integer");
+            if (value != std::floor(value) || std::abs(value) > 1e18) {
+                fail_data("a vertex index is not an integer in range");
             }
             items.push_back(static_cast<long long>(value));
             item_pos_.push_back({token_line_, token_column_, token_offset_});
