@@ -23,7 +23,7 @@ constexpr int kExitBadInput = 2;
 
 // A progress bar on stderr: percentage, elapsed time and an estimate of the time left.
 class ProgressBar {
-  public:
+public:
     explicit ProgressBar(bool enabled) : enabled_(enabled), start_(std::chrono::steady_clock::now()) {}
 
     void update(double fraction) {
@@ -44,8 +44,7 @@ class ProgressBar {
         if (fraction > 0.01) {
             std::snprintf(eta, sizeof(eta), "%.1fs", elapsed * (1 - fraction) / fraction);
         }
-        std::fprintf(stderr, "\r[%s] %5.1f%%  elapsed %.1fs  ETA %s   ", bar.c_str(), 100 * fraction, elapsed,
-                     eta);
+        std::fprintf(stderr, "\r[%s] %5.1f%%  elapsed %.1fs  ETA %s   ", bar.c_str(), 100 * fraction, elapsed, eta);
         std::fflush(stderr);
     }
     void finish() {
@@ -54,7 +53,7 @@ class ProgressBar {
         }
     }
 
-  private:
+private:
     bool enabled_;
     std::chrono::steady_clock::time_point start_;
     std::chrono::steady_clock::time_point last_draw_{};
@@ -79,9 +78,8 @@ int run_render(const RenderOptions& options) {
     // Check the output path before spending time on the render.
     std::filesystem::path output = options.output;
     if (output.empty()) {
-        output = options.scene_path.empty()
-                     ? "default.png"
-                     : std::filesystem::path(options.scene_path).stem().string() + ".png";
+        output = options.scene_path.empty() ? "default.png"
+                                            : std::filesystem::path(options.scene_path).stem().string() + ".png";
     }
     if (!glint::image_format_for(output)) {
         return bad_input("cannot write '" + output.string() + "': unknown image format (use " +
@@ -89,8 +87,7 @@ int run_render(const RenderOptions& options) {
     }
     const std::filesystem::path out_dir = output.has_parent_path() ? output.parent_path() : ".";
     if (!std::filesystem::is_directory(out_dir)) {
-        return bad_input("cannot write '" + output.string() + "': the folder '" + out_dir.string() +
-                         "' does not exist");
+        return bad_input("cannot write '" + output.string() + "': the folder '" + out_dir.string() + "' does not exist");
     }
 
     glint::Scene scene;
@@ -132,9 +129,9 @@ int run_render(const RenderOptions& options) {
         return 1;
     }
     if (!options.quiet) {
-        std::fprintf(stderr, "glint: %dx%d, %u spp, %.2f s, %.2f M rays, %.2f Mrays/s -> %s\n",
-                     scene.settings.width, scene.settings.height, stats.samples_per_pixel, stats.seconds,
-                     stats.rays.total() * 1e-6, stats.mrays_per_second(), output.string().c_str());
+        std::fprintf(stderr, "glint: %dx%d, %u spp, %.2f s, %.2f M rays, %.2f Mrays/s -> %s\n", scene.settings.width,
+                     scene.settings.height, stats.samples_per_pixel, stats.seconds, stats.rays.total() * 1e-6,
+                     stats.mrays_per_second(), output.string().c_str());
     }
     return 0;
 }
@@ -147,36 +144,29 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
 
     RenderOptions options;
-    CLI::App* render =
-        app.add_subcommand("render", "Render a scene file (or the built-in default scene) to an image");
-    render->add_option("scene", options.scene_path,
-                       "Scene file (YAML or JSON); omitted: the built-in default scene");
-    render->add_option(
-        "-o,--output", options.output,
-        "Output image: .png (8-bit sRGB), .pfm or .exr (linear float radiance); default: <scene>.png");
+    CLI::App* render = app.add_subcommand("render", "Render a scene file (or the built-in default scene) to an image");
+    render->add_option("scene", options.scene_path, "Scene file (YAML or JSON); omitted: the built-in default scene");
+    render->add_option("-o,--output", options.output,
+                       "Output image: .png (8-bit sRGB), .pfm or .exr (linear float radiance); default: <scene>.png");
     render->add_option("--width", options.width, "Image width in pixels")->check(CLI::Range(1, 1 << 15));
     render->add_option("--height", options.height, "Image height in pixels")->check(CLI::Range(1, 1 << 15));
     render->add_option("--spp", options.spp, "Samples per pixel")->check(CLI::Range(1, 1 << 20));
-    render->add_option(
-        "--sampler", options.sampler, "Sample pattern (" + [] {
-            std::string names;
-            for (const auto& n : glint::sampler_names()) {
-                names += (names.empty() ? "" : ", ") + n;
-            }
-            return names;
-        }() + ")");
-    render->add_option(
-        "--accel", options.accelerator, "Ray accelerator (" + [] {
-            std::string names;
-            for (const auto& entry : glint::accelerator_table()) {
-                names += (names.empty() ? "" : ", ") + entry.name;
-            }
-            return names;
-        }() + "; default bvh)");
-    render->add_option("--threads", options.threads, "Worker threads (default: all cores)")
-        ->check(CLI::Range(1, 4096));
-    render->add_option("--seed", options.seed,
-                       "Random seed: the same seed gives the same image, bit for bit");
+    render->add_option("--sampler", options.sampler, "Sample pattern (" + [] {
+        std::string names;
+        for (const auto& n : glint::sampler_names()) {
+            names += (names.empty() ? "" : ", ") + n;
+        }
+        return names;
+    }() + ")");
+    render->add_option("--accel", options.accelerator, "Ray accelerator (" + [] {
+        std::string names;
+        for (const auto& entry : glint::accelerator_table()) {
+            names += (names.empty() ? "" : ", ") + entry.name;
+        }
+        return names;
+    }() + "; default bvh)");
+    render->add_option("--threads", options.threads, "Worker threads (default: all cores)")->check(CLI::Range(1, 4096));
+    render->add_option("--seed", options.seed, "Random seed: the same seed gives the same image, bit for bit");
     render->add_flag("-q,--quiet", options.quiet, "No progress bar and no summary");
     add_info_command(app);
 

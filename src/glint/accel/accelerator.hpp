@@ -13,7 +13,7 @@
 namespace glint {
 
 class Accelerator {
-  public:
+public:
     virtual ~Accelerator() = default;
     // Nearest hit with t in (0, t_max); sets hit.primitive to the index of the shape in the list given
     // at construction.

@@ -2,8 +2,7 @@
 
 namespace glint {
 
-LinearAccelerator::LinearAccelerator(std::span<const Shape* const> shapes)
-    : shapes_(shapes.begin(), shapes.end()) {
+LinearAccelerator::LinearAccelerator(std::span<const Shape* const> shapes) : shapes_(shapes.begin(), shapes.end()) {
     for (const Shape* shape : shapes_) {
         bounds_.grow(shape->bounds());
     }

@@ -33,9 +33,7 @@ inline Vec3 offset_ray_origin(const Hit& hit, const Vec3& dir) {
     return dot(dir, hit.normal) >= 0 ? hit.point + offset : hit.point - offset;
 }
 
-inline Ray spawn_ray(const Hit& hit, const Vec3& dir) {
-    return {offset_ray_origin(hit, dir), dir};
-}
+inline Ray spawn_ray(const Hit& hit, const Vec3& dir) { return {offset_ray_origin(hit, dir), dir}; }
 
 // A ray from `hit` towards the point `target`, parametrised so that t = 1 reaches the target.
 inline Ray spawn_ray_to(const Hit& hit, const Vec3& target) {

@@ -6,7 +6,7 @@ namespace glint {
 
 // The infinite plane through `point` with unit `normal`.
 class Plane final : public Shape {
-  public:
+public:
     Plane(const Vec3& point, const Vec3& normal);
     Bounds3 bounds() const override { return Bounds3::infinite(); }
     bool intersect(const Ray& ray, double t_max, Hit& hit) const override;
@@ -14,7 +14,7 @@ class Plane final : public Shape {
 
     static std::unique_ptr<Shape> create(Params& params, const BuildContext& context);
 
-  private:
+private:
     double solve(const Ray& ray) const;
 
     Vec3 point_;

@@ -19,12 +19,12 @@ struct BuildContext;
 // A point chosen on a shape's surface, for lights with area.
 struct ShapeSample {
     Vec3 point;
-    Vec3 normal;          // unit, outward
+    Vec3 normal;        // unit, outward
     double pdf_area = 0;  // density per unit area
 };
 
 class Shape {
-  public:
+public:
     virtual ~Shape() = default;
 
     // World bounds; infinite for unbounded shapes (planes), which accelerators keep aside.

@@ -5,7 +5,7 @@
 namespace glint {
 
 class Sphere final : public Shape {
-  public:
+public:
     Sphere(const Vec3& center, double radius) : center_(center), radius_(radius) {}
     Bounds3 bounds() const override;
     bool intersect(const Ray& ray, double t_max, Hit& hit) const override;
@@ -17,7 +17,7 @@ class Sphere final : public Shape {
 
     static std::unique_ptr<Shape> create(Params& params, const BuildContext& context);
 
-  private:
+private:
     // The roots t0 ≤ t1 of |O + tD − C|² = R², or false when the ray misses.
     bool solve(const Ray& ray, double& t0, double& t1) const;
 
