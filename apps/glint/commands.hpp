@@ -9,3 +9,5 @@
 void add_samples_command(CLI::App& app);
 // `glint serve`: a live preview in the browser (serve_command.cpp).
 void add_serve_command(CLI::App& app);
+// `glint info SCENE`: what the scene holds and what its BVH costs (info_command.cpp).
+void add_info_command(CLI::App& app);

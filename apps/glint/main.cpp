@@ -66,7 +66,7 @@ struct RenderOptions {
     std::optional<int> width, height, threads;
     std::optional<std::uint32_t> spp;
     std::optional<std::uint64_t> seed;
-    std::optional<std::string> sampler, integrator;
+    std::optional<std::string> sampler, integrator, accelerator;
     std::optional<int> max_depth;
     bool quiet = false;
 };
@@ -107,6 +107,7 @@ int run_render(const RenderOptions& options) {
         overrides.sampler = options.sampler;
         overrides.integrator = options.integrator;
         overrides.max_depth = options.max_depth;
+        overrides.accelerator = options.accelerator;
         scene = glint::build_scene(desc, overrides);
     } catch (const glint::SceneError& e) {
         std::cerr << e.what() << '\n';
@@ -177,6 +178,14 @@ int main(int argc, char** argv) {
         }() + ")");
     render->add_option("--max-depth", options.max_depth, "Longest path in bounces (whitted, path)")
         ->check(CLI::Range(1, 1 << 16));
+    render->add_option(
+        "--accel", options.accelerator, "Ray accelerator (" + [] {
+            std::string names;
+            for (const auto& entry : glint::accelerator_table()) {
+                names += (names.empty() ? "" : ", ") + entry.name;
+            }
+            return names;
+        }() + "; default bvh)");
     render->add_option("--threads", options.threads, "Worker threads (default: all cores)")
         ->check(CLI::Range(1, 4096));
     render->add_option("--seed", options.seed,
@@ -184,6 +193,7 @@ int main(int argc, char** argv) {
     render->add_flag("-q,--quiet", options.quiet, "No progress bar and no summary");
     add_samples_command(app);
     add_serve_command(app);
+    add_info_command(app);
 
     try {
         app.parse(argc, argv);

@@ -1,10 +1,18 @@
 // The one name → constructor table of accelerators.
+#include "glint/accel/bvh.hpp"
+#include "glint/accel/embree.hpp"
 #include "glint/accel/linear.hpp"
 
 namespace glint {
 
 const std::vector<AcceleratorEntry>& accelerator_table() {
     static const std::vector<AcceleratorEntry> table = {
+        {"bvh", "8-wide SAH bounding volume hierarchy (the default)",
+         [](std::span<const Shape* const> shapes) { return std::make_unique<BvhAccelerator>(shapes); }},
+#ifdef GLINT_HAVE_EMBREE
+        {"embree", "Intel Embree 3 (built because Embree was found; a check on and a rival to bvh)",
+         [](std::span<const Shape* const> shapes) { return std::make_unique<EmbreeAccelerator>(shapes); }},
+#endif
         {"list", "every shape tested for every ray (brute force; the reference)",
          [](std::span<const Shape* const> shapes) { return std::make_unique<LinearAccelerator>(shapes); }},
     };

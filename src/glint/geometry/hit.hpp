@@ -18,6 +18,7 @@ struct Hit {
     // it, so that no epsilon in scene units is needed and scaled scenes behave the same.
     double error = 0;
     std::uint32_t primitive = 0;  // index into the scene's primitives
+    std::uint32_t element = 0;    // which part of that primitive was hit: the triangle of a mesh
 };
 
 // Relative rounding error of hit points computed in double precision, with a wide margin: hit points

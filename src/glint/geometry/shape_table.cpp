@@ -3,6 +3,7 @@
 #include "glint/geometry/cone.hpp"
 #include "glint/geometry/cylinder.hpp"
 #include "glint/geometry/disk.hpp"
+#include "glint/geometry/mesh.hpp"
 #include "glint/geometry/plane.hpp"
 #include "glint/geometry/rectangle.hpp"
 #include "glint/geometry/sphere.hpp"
@@ -23,6 +24,7 @@ const std::vector<ShapeEntry>& shape_table() {
         {"cylinder", &Cylinder::create},
         {"cone", &Cone::create},
         {"torus", &Torus::create},
+        {"mesh", &Mesh::create},
     };
     // clang-format on
     return table;

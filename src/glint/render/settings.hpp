@@ -12,7 +12,7 @@ struct RenderSettings {
     std::uint32_t samples_per_pixel = 16;  // requested; the sampler may round it (jittered: to a square)
     std::string sampler = "jittered";
     std::string integrator = "raycast";
-    std::string accelerator = "list";
+    std::string accelerator = "bvh";
     int max_depth = 5;
     std::uint64_t seed = 1;
     int threads = 0;     // 0: all cores

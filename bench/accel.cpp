@@ -1,0 +1,291 @@
+// Ray accelerators raced: glint's BVH against Embree, single rays, 2 threads, on the bunny (69 k
+// triangles), the dragon subdivided to 1.6 M triangles, and 100 k spheres; for each, primary rays,
+// diffuse-bounce rays (cosine-distributed from the primary hits) and shadow rays (towards a point
+// light). Also: BVH build rate and bytes per triangle, and how the cost per ray grows from ~2 k to
+// ~2 M triangles (a tessellated sphere). Ratios are printed at the end of the run.
+//   ./build/release/bench/glint_bench_accel
+#include <benchmark/benchmark.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <cstdio>
+#include <map>
+#include <random>
+
+#include "glint/accel/bvh.hpp"
+#include "glint/accel/embree.hpp"
+#include "glint/core/frame.hpp"
+#include "glint/geometry/mesh.hpp"
+#include "glint/geometry/sphere.hpp"
+
+namespace {
+
+using namespace glint;
+
+constexpr int kThreads = 2;
+constexpr std::size_t kRaysPerSet = 1 << 16;
+
+// One of the three kinds of query; shadow rays ask occluded() with t_max = 1 (the light).
+struct RaySet {
+    std::vector<Ray> rays;
+    bool shadow = false;
+};
+
+struct BenchScene {
+    std::vector<std::unique_ptr<Shape>> shapes;
+    std::vector<const Shape*> pointers;
+    std::unique_ptr<Accelerator> bvh, embree;
+    std::map<std::string, RaySet> ray_sets;  // "primary", "diffuse", "shadow"
+    std::size_t triangles = 0;
+};
+
+// Midpoint subdivision: every triangle becomes four (positions only; the surface is unchanged).
+MeshData subdivide(const MeshData& in) {
+    MeshData out;
+    out.positions = in.positions;
+    std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> midpoint;
+    auto mid = [&](std::uint32_t a, std::uint32_t b) {
+        const auto [it, inserted] =
+            midpoint.try_emplace(std::minmax(a, b), static_cast<std::uint32_t>(out.positions.size()));
+        if (inserted) {
+            out.positions.push_back(0.5 * (out.positions[a] + out.positions[b]));
+        }
+        return it->second;
+    };
+    for (const auto& t : in.triangles) {
+        const std::uint32_t ab = mid(t[0], t[1]), bc = mid(t[1], t[2]), ca = mid(t[2], t[0]);
+        out.triangles.push_back({t[0], ab, ca});
+        out.triangles.push_back({ab, t[1], bc});
+        out.triangles.push_back({ca, bc, t[2]});
+        out.triangles.push_back({ab, bc, ca});
+    }
+    return out;
+}
+
+MeshData tessellated_sphere(int subdivisions) {
+    MeshData mesh;
+    mesh.positions = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    mesh.triangles = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
+    for (int s = 0; s < subdivisions; ++s) {
+        mesh = subdivide(mesh);
+        for (Vec3& p : mesh.positions) {
+            p = normalize(p);
+        }
+    }
+    return mesh;
+}
+
+void make_rays(BenchScene& scene) {
+    const Bounds3 box = scene.bvh->bounds();
+    const Vec3 center = box.center();
+    const double size = length(box.extent());
+    // A camera on a diagonal, looking at the centre, its 512 × 128 image spanning the bounds.
+    const Vec3 eye = center + Vec3{0.3, 0.4, 1.0} * (1.1 * size);
+    const Frame frame = Frame::from_normal(normalize(center - eye));
+    const Vec3 light = center + Vec3{-0.5, 1.5, 0.5} * size;
+    std::mt19937_64 rng(1);
+    std::uniform_real_distribution<double> u(0, 1);
+    RaySet primary, diffuse, shadow;
+    shadow.shadow = true;
+    const int width = 512, height = static_cast<int>(kRaysPerSet / 512);
+    for (int y = 0; y < height; ++y) {
+        for (int x = 0; x < width; ++x) {
+            const double sx = (x + 0.5) / width - 0.5, sy = (y + 0.5) / height - 0.5;
+            const Vec3 dir = normalize(
+                frame.n + 0.55 * (sx * frame.s + sy * frame.t * (static_cast<double>(height) / width)));
+            const Ray ray{eye, dir};
+            primary.rays.push_back(ray);
+            Hit hit;
+            if (!scene.bvh->intersect(ray, kInf, hit)) {
+                continue;
+            }
+            const Vec3 n = dot(hit.normal, dir) < 0 ? hit.normal : -hit.normal;
+            // Cosine-distributed about the normal (Malley's method).
+            const double r = std::sqrt(u(rng)), phi = 2 * kPi * u(rng);
+            const Frame local = Frame::from_normal(n);
+            const Vec3 bounce =
+                local.to_world({r * std::cos(phi), r * std::sin(phi), std::sqrt(std::max(0.0, 1 - r * r))});
+            diffuse.rays.push_back(spawn_ray(hit, bounce));
+            shadow.rays.push_back(spawn_ray_to(hit, light));
+        }
+    }
+    scene.ray_sets["primary"] = std::move(primary);
+    scene.ray_sets["diffuse"] = std::move(diffuse);
+    scene.ray_sets["shadow"] = std::move(shadow);
+}
+
+std::unique_ptr<BenchScene> finish(std::unique_ptr<BenchScene> scene, bool with_embree) {
+    for (const auto& s : scene->shapes) {
+        scene->pointers.push_back(s.get());
+        if (const auto* mesh = dynamic_cast<const Mesh*>(s.get())) {
+            scene->triangles += mesh->triangles().size();
+        }
+    }
+    scene->bvh = std::make_unique<BvhAccelerator>(scene->pointers);
+#ifdef GLINT_HAVE_EMBREE
+    if (with_embree) {
+        scene->embree = std::make_unique<EmbreeAccelerator>(scene->pointers);
+    }
+#else
+    (void)with_embree;
+#endif
+    make_rays(*scene);
+    return scene;
+}
+
+const std::filesystem::path kMeshes = std::filesystem::path(GLINT_SHARED_DIR) / "data/meshes";
+
+const MeshData& dragon_1m6() {
+    static const MeshData mesh = subdivide(subdivide(load_mesh_file(kMeshes / "dragon_100k_vcg.ply")));
+    return mesh;
+}
+
+BenchScene& scene(const std::string& name) {
+    static std::map<std::string, std::unique_ptr<BenchScene>> cache;
+    auto& slot = cache[name];
+    if (!slot) {
+        auto s = std::make_unique<BenchScene>();
+        bool with_embree = true;
+        if (name == "bunny") {
+            s->shapes.push_back(std::make_unique<Mesh>(load_mesh_file(kMeshes / "stanford-bunny.obj")));
+        } else if (name == "dragon1.6M") {
+            s->shapes.push_back(std::make_unique<Mesh>(dragon_1m6()));
+        } else if (name == "spheres100k") {
+            std::mt19937_64 rng(3);
+            std::uniform_real_distribution<double> u(0, 1);
+            for (int i = 0; i < 100000; ++i) {
+                s->shapes.push_back(std::make_unique<Sphere>(Vec3{100 * u(rng), 100 * u(rng), 100 * u(rng)},
+                                                             0.3 + 0.7 * u(rng)));
+            }
+        } else if (name == "sphere2k") {
+            s->shapes.push_back(std::make_unique<Mesh>(tessellated_sphere(4)));  // 2 048 triangles
+            with_embree = false;
+        } else if (name == "sphere2M") {
+            s->shapes.push_back(std::make_unique<Mesh>(tessellated_sphere(9)));  // 2 097 152 triangles
+            with_embree = false;
+        }
+        slot = finish(std::move(s), with_embree);
+    }
+    return *slot;
+}
+
+void BM_Rays(benchmark::State& state, const std::string& scene_name, const std::string& kind, bool embree) {
+    BenchScene& s = scene(scene_name);
+    const Accelerator* accel = embree ? s.embree.get() : s.bvh.get();
+    if (accel == nullptr) {
+        state.SkipWithError("Embree is not built in");
+        return;
+    }
+    const RaySet& set = s.ray_sets.at(kind);
+    tbb::task_arena arena(kThreads);
+    std::uint64_t rays = 0, hits = 0;
+    for (auto _ : state) {
+        std::atomic<std::uint64_t> found{0};
+        arena.execute([&] {
+            tbb::parallel_for(tbb::blocked_range<std::size_t>(0, set.rays.size(), 1024),
+                              [&](const auto& range) {
+                                  std::uint64_t local = 0;
+                                  for (std::size_t i = range.begin(); i < range.end(); ++i) {
+                                      if (set.shadow) {
+                                          local += accel->occluded(set.rays[i], 1.0) ? 1 : 0;
+                                      } else {
+                                          Hit hit;
+                                          local += accel->intersect(set.rays[i], kInf, hit) ? 1 : 0;
+                                      }
+                                  }
+                                  found += local;
+                              });
+        });
+        rays += set.rays.size();
+        hits = found;
+    }
+    state.counters["Mrays/s"] =
+        benchmark::Counter(static_cast<double>(rays) * 1e-6, benchmark::Counter::kIsRate);
+    state.counters["hit%"] = 100.0 * static_cast<double>(hits) / static_cast<double>(set.rays.size());
+    state.counters["tris"] = static_cast<double>(s.triangles);
+}
+
+void BM_BuildDragon(benchmark::State& state) {
+    const MeshData& data = dragon_1m6();
+    double bytes_per_triangle = 0;
+    for (auto _ : state) {
+        const Mesh mesh(data);
+        bytes_per_triangle =
+            static_cast<double>(mesh.memory_bytes()) / static_cast<double>(mesh.triangles().size());
+        benchmark::DoNotOptimize(mesh.bvh().nodes().data());
+    }
+    state.counters["Mtris/s"] = benchmark::Counter(
+        static_cast<double>(data.triangles.size()) * 1e-6 * static_cast<double>(state.iterations()),
+        benchmark::Counter::kIsRate);
+    state.counters["bytes/tri"] = bytes_per_triangle;
+}
+
+void register_all() {
+    for (const char* name : {"bunny", "dragon1.6M", "spheres100k"}) {
+        for (const char* kind : {"primary", "diffuse", "shadow"}) {
+            for (bool embree : {false, true}) {
+                const std::string label =
+                    std::string("Rays/") + name + "/" + kind + "/" + (embree ? "embree" : "bvh");
+                benchmark::RegisterBenchmark(label.c_str(), BM_Rays, std::string(name), std::string(kind),
+                                             embree)
+                    ->UseRealTime()
+                    ->Unit(benchmark::kMillisecond);
+            }
+        }
+    }
+    for (const char* name : {"sphere2k", "sphere2M"}) {
+        benchmark::RegisterBenchmark((std::string("Rays/") + name + "/primary/bvh").c_str(), BM_Rays,
+                                     std::string(name), std::string("primary"), false)
+            ->UseRealTime()
+            ->Unit(benchmark::kMillisecond);
+    }
+    benchmark::RegisterBenchmark("Build/dragon1.6M", BM_BuildDragon)
+        ->UseRealTime()
+        ->Unit(benchmark::kMillisecond);
+}
+
+// Prints the runs as usual and remembers each one's Mrays/s, for the ratios at the end.
+class RatioReporter : public benchmark::ConsoleReporter {
+  public:
+    void ReportRuns(const std::vector<Run>& runs) override {
+        ConsoleReporter::ReportRuns(runs);
+        for (const Run& run : runs) {
+            const auto it = run.counters.find("Mrays/s");
+            if (it != run.counters.end()) {
+                rates[run.benchmark_name()] = it->second.value;
+            }
+        }
+    }
+    std::map<std::string, double> rates;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    benchmark::Initialize(&argc, argv);
+    register_all();
+    RatioReporter reporter;
+    benchmark::RunSpecifiedBenchmarks(&reporter);
+    std::printf("\nbvh / embree (rays/s ratio, %d threads; target >= 0.9 on meshes, >= 1.0 on spheres):\n",
+                kThreads);
+    for (const auto& [name, rate] : reporter.rates) {
+        const std::size_t slash = name.rfind("/bvh");
+        if (slash == std::string::npos) {
+            continue;
+        }
+        const std::string base = name.substr(0, slash);
+        const auto other = reporter.rates.find(base + "/embree" + name.substr(slash + 4));
+        if (other != reporter.rates.end() && other->second > 0) {
+            std::printf("  %-28s %.2f\n", base.c_str(), rate / other->second);
+        }
+    }
+    const auto small = reporter.rates.find("Rays/sphere2k/primary/bvh/real_time");
+    const auto large = reporter.rates.find("Rays/sphere2M/primary/bvh/real_time");
+    if (small != reporter.rates.end() && large != reporter.rates.end() && large->second > 0) {
+        std::printf("cost per ray, 2 M vs 2 k triangles: %.2fx (target <= 3x)\n",
+                    small->second / large->second);
+    }
+    benchmark::Shutdown();
+    return 0;
+}

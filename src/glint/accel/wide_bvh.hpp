@@ -1,0 +1,326 @@
+// An 8-wide bounding volume hierarchy over primitives known only by their boxes: the engine under the
+// scene's BVH (whose primitives are shapes) and under each mesh (whose primitives are triangles).
+//
+// Build: binned SAH (16 bins per axis), parallel over subtrees with TBB. Each wide node is made by
+// splitting its primitives with the SAH until it has 8 children (always opening the child of largest
+// area), so no binary tree is built and then collapsed.
+//
+// Nodes store their children's boxes in float, structure-of-arrays, rounded outwards (so a float box
+// always contains the double one). Traversal tests the 8 boxes at once with AVX2 when the CPU has it,
+// with a scalar loop otherwise; both are compiled into the same binary and chosen at run time.
+//
+// The owner keeps its primitives in primitive_order() so that a leaf is a contiguous range [first,
+// first + count), and tests them in a leaf callback: the hot loop is the caller's flat code, not a
+// virtual call per primitive.
+#pragma once
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <span>
+#include <type_traits>
+#include <vector>
+
+#include "glint/core/bounds.hpp"
+#include "glint/core/ray.hpp"
+
+#if defined(__x86_64__) || defined(__i386__)
+#include <immintrin.h>
+#define GLINT_BVH_HAVE_AVX2_PATH 1
+#endif
+
+namespace glint {
+
+// double → float without undefined behaviour: values beyond float's range become ±infinity (NaN stays).
+inline float saturate_to_float(double x) {
+    constexpr double kMax = std::numeric_limits<float>::max();
+    if (x > kMax) {
+        return std::numeric_limits<float>::infinity();
+    }
+    if (x < -kMax) {
+        return -std::numeric_limits<float>::infinity();
+    }
+    return static_cast<float>(x);
+}
+
+struct alignas(32) WideBvhNode {
+    static constexpr int kWidth = 8;
+    // Child boxes; an empty slot has lo = +inf and hi = −inf, which no ray hits.
+    float lo_x[kWidth], lo_y[kWidth], lo_z[kWidth];
+    float hi_x[kWidth], hi_y[kWidth], hi_z[kWidth];
+    std::uint32_t child[kWidth];  // inner child: node index; leaf: first primitive (in primitive order)
+    std::uint32_t count[kWidth];  // 0: inner child (or empty slot); n > 0: a leaf of n primitives
+};
+
+struct BvhBuildOptions {
+    int max_leaf_size = 4;      // leaves hold at most this many primitives, unless they cannot be split
+    double traversal_cost = 1;  // the SAH's cost of visiting a node, relative to one primitive test
+    // Primitives tested together at the same cost (the mesh tests blocks of 4 triangles at once): the
+    // SAH counts a leaf of n primitives as ⌈n / group⌉ tests, which favours full groups.
+    int primitives_per_test = 1;
+};
+
+class WideBvh {
+  public:
+    WideBvh() = default;
+    // Builds over one box per primitive. Boxes must be finite (unbounded shapes are kept elsewhere).
+    void build(std::span<const Bounds3> boxes, const BvhBuildOptions& options = {});
+
+    // The primitive stored at position i, for leaf ranges: leaves refer to positions in this order.
+    const std::vector<std::uint32_t>& primitive_order() const { return order_; }
+    const std::vector<WideBvhNode>& nodes() const { return nodes_; }
+    const Bounds3& bounds() const { return bounds_; }
+    std::size_t memory_bytes() const {
+        return nodes_.capacity() * sizeof(WideBvhNode) + order_.capacity() * sizeof(std::uint32_t);
+    }
+    // Whether traversal uses the AVX2 path: when the CPU has AVX2 and FMA, unless a test asked for the
+    // scalar path (so both paths are tested on any machine).
+    static bool uses_avx2() { return cpu_has_avx2() && !scalar_forced().load(std::memory_order_relaxed); }
+    static void force_scalar_traversal(bool on) { scalar_forced().store(on); }
+    static bool cpu_has_avx2();
+
+    // Nearest hit. `leaf(first, count, t_max, avx2)` tests primitives [first, first + count) for hits
+    // with t in (0, t_max), lowers t_max to the nearest one found and returns whether it found any.
+    // `avx2` is std::true_type when called from the AVX2 traversal (the leaf may then use AVX2 too).
+    template <class Leaf>
+    bool intersect(const Ray& ray, double& t_max, Leaf&& leaf) const;
+    // Any hit: `leaf(first, count, t_max, avx2)` returns whether any primitive is hit before t_max.
+    template <class Leaf>
+    bool occluded(const Ray& ray, double t_max, Leaf&& leaf) const;
+
+    // A ray prepared for the box tests (public for the node tests in bvh_detail).
+    struct TraversalRay;
+
+    // Lets the owner re-lay its leaves out: `f(first, count)` returns the new `first` of each leaf
+    // (the mesh packs its leaves into blocks of four triangles).
+    template <class F>
+    void remap_leaves(F&& f) {
+        for (WideBvhNode& node : nodes_) {
+            for (int c = 0; c < WideBvhNode::kWidth; ++c) {
+                if (node.count[c] > 0) {
+                    node.child[c] = f(node.child[c], node.count[c]);
+                }
+            }
+        }
+    }
+
+  private:
+    static std::atomic<bool>& scalar_forced() {
+        static std::atomic<bool> forced{false};
+        return forced;
+    }
+    template <bool kAnyHit, class NodeTest, class Leaf>
+    bool traverse(const Ray& ray, double& t_max, Leaf& leaf) const;
+#ifdef GLINT_BVH_HAVE_AVX2_PATH
+    // The same loop compiled for AVX2, so that the node test and the owner's leaf test are inlined.
+    template <bool kAnyHit, class Leaf>
+    bool traverse_avx2(const Ray& ray, double& t_max, Leaf& leaf) const;
+#endif
+
+    std::vector<WideBvhNode> nodes_;  // nodes_[0] is the root (when there are primitives)
+    std::vector<std::uint32_t> order_;
+    Bounds3 bounds_;
+};
+
+// ---- traversal (in the header so that the owner's leaf test is inlined) ------------------------------
+
+struct WideBvh::TraversalRay {
+    // Slab planes are chosen by the sign of the direction, so that an inverted (empty) box never
+    // passes; t = plane · inv − origin · inv.
+    float inv[3];
+    float origin_inv[3];
+    int near_offset[3];  // offset of the near plane's array (lo or hi) within a node, per axis
+    int far_offset[3];
+
+    explicit TraversalRay(const Ray& ray) {
+        for (int a = 0; a < 3; ++a) {
+            // A zero component gives ±inf; a finite stand-in keeps 0 · inf (NaN) out of the slab test.
+            double inverse = 1.0 / ray.direction[a];
+            constexpr double kHuge = 1e30;
+            if (!(std::abs(inverse) < kHuge)) {
+                inverse = std::signbit(ray.direction[a]) ? -kHuge : kHuge;
+            }
+            inv[a] = saturate_to_float(inverse);
+            origin_inv[a] = saturate_to_float(ray.origin[a] * inverse);
+            const bool negative = inv[a] < 0;
+            const int lo = static_cast<int>(a * WideBvhNode::kWidth * sizeof(float));
+            const int hi = lo + static_cast<int>(3 * WideBvhNode::kWidth * sizeof(float));
+            near_offset[a] = negative ? hi : lo;
+            far_offset[a] = negative ? lo : hi;
+        }
+    }
+};
+
+namespace bvh_detail {
+
+// The float bound for a double t_max, rounded up and with a margin for the float slab arithmetic.
+inline float far_limit(double t_max) {
+    return saturate_to_float(t_max * (1 + 1e-6));
+}
+
+inline const float* plane(const WideBvhNode& node, int offset) {
+    return reinterpret_cast<const float*>(reinterpret_cast<const unsigned char*>(&node) + offset);
+}
+
+// Which of the node's 8 boxes the ray enters before t_far (bit i for child i), and where.
+struct ScalarNodeTest {
+    static constexpr bool kAvx2 = false;
+    static unsigned hits(const WideBvhNode& node, const WideBvh::TraversalRay& r, float t_far,
+                         float* t_near_out);
+};
+
+#ifdef GLINT_BVH_HAVE_AVX2_PATH
+struct Avx2NodeTest {
+    static constexpr bool kAvx2 = true;
+    __attribute__((target("avx2,fma"))) static inline unsigned hits(const WideBvhNode& node,
+                                                                    const WideBvh::TraversalRay& r,
+                                                                    float t_far, float* t_near_out);
+};
+#endif
+
+// A pending subtree: what the stack holds.
+struct StackEntry {
+    std::uint32_t child;
+    std::uint32_t count;
+    float t_near;
+};
+
+}  // namespace bvh_detail
+
+inline unsigned bvh_detail::ScalarNodeTest::hits(const WideBvhNode& node, const WideBvh::TraversalRay& r,
+                                                 float t_far, float* t_near_out) {
+    const float* near_x = plane(node, r.near_offset[0]);
+    const float* near_y = plane(node, r.near_offset[1]);
+    const float* near_z = plane(node, r.near_offset[2]);
+    const float* far_x = plane(node, r.far_offset[0]);
+    const float* far_y = plane(node, r.far_offset[1]);
+    const float* far_z = plane(node, r.far_offset[2]);
+    unsigned mask = 0;
+    for (int i = 0; i < WideBvhNode::kWidth; ++i) {
+        // max(acc, x) keeps acc when x is NaN: a slab that cannot be evaluated does not cull.
+        float t0 = 0;
+        t0 = std::max(t0, near_x[i] * r.inv[0] - r.origin_inv[0]);
+        t0 = std::max(t0, near_y[i] * r.inv[1] - r.origin_inv[1]);
+        t0 = std::max(t0, near_z[i] * r.inv[2] - r.origin_inv[2]);
+        float t1 = t_far;
+        t1 = std::min(t1, (far_x[i] * r.inv[0] - r.origin_inv[0]) * (1 + 4e-7f));
+        t1 = std::min(t1, (far_y[i] * r.inv[1] - r.origin_inv[1]) * (1 + 4e-7f));
+        t1 = std::min(t1, (far_z[i] * r.inv[2] - r.origin_inv[2]) * (1 + 4e-7f));
+        t_near_out[i] = t0;
+        mask |= (t0 <= t1 ? 1u : 0u) << i;
+    }
+    return mask;
+}
+
+#ifdef GLINT_BVH_HAVE_AVX2_PATH
+__attribute__((target("avx2,fma"))) inline unsigned bvh_detail::Avx2NodeTest::hits(
+    const WideBvhNode& node, const WideBvh::TraversalRay& r, float t_far, float* t_near_out) {
+    const __m256 near_x = _mm256_load_ps(plane(node, r.near_offset[0]));
+    const __m256 near_y = _mm256_load_ps(plane(node, r.near_offset[1]));
+    const __m256 near_z = _mm256_load_ps(plane(node, r.near_offset[2]));
+    const __m256 far_x = _mm256_load_ps(plane(node, r.far_offset[0]));
+    const __m256 far_y = _mm256_load_ps(plane(node, r.far_offset[1]));
+    const __m256 far_z = _mm256_load_ps(plane(node, r.far_offset[2]));
+    const __m256 inv_x = _mm256_set1_ps(r.inv[0]);
+    const __m256 inv_y = _mm256_set1_ps(r.inv[1]);
+    const __m256 inv_z = _mm256_set1_ps(r.inv[2]);
+    const __m256 oi_x = _mm256_set1_ps(r.origin_inv[0]);
+    const __m256 oi_y = _mm256_set1_ps(r.origin_inv[1]);
+    const __m256 oi_z = _mm256_set1_ps(r.origin_inv[2]);
+    const __m256 grow = _mm256_set1_ps(1 + 4e-7f);
+    // _mm256_max_ps(x, acc) returns acc when x is NaN, like the scalar path.
+    __m256 t0 = _mm256_setzero_ps();
+    t0 = _mm256_max_ps(_mm256_fmsub_ps(near_x, inv_x, oi_x), t0);
+    t0 = _mm256_max_ps(_mm256_fmsub_ps(near_y, inv_y, oi_y), t0);
+    t0 = _mm256_max_ps(_mm256_fmsub_ps(near_z, inv_z, oi_z), t0);
+    __m256 t1 = _mm256_set1_ps(t_far);
+    t1 = _mm256_min_ps(_mm256_mul_ps(_mm256_fmsub_ps(far_x, inv_x, oi_x), grow), t1);
+    t1 = _mm256_min_ps(_mm256_mul_ps(_mm256_fmsub_ps(far_y, inv_y, oi_y), grow), t1);
+    t1 = _mm256_min_ps(_mm256_mul_ps(_mm256_fmsub_ps(far_z, inv_z, oi_z), grow), t1);
+    _mm256_storeu_ps(t_near_out, t0);
+    return static_cast<unsigned>(_mm256_movemask_ps(_mm256_cmp_ps(t0, t1, _CMP_LE_OQ)));
+}
+#endif
+
+template <bool kAnyHit, class NodeTest, class Leaf>
+__attribute__((always_inline)) inline bool WideBvh::traverse(const Ray& ray, double& t_max,
+                                                             Leaf& leaf) const {
+    using bvh_detail::StackEntry;
+    if (nodes_.empty()) {
+        return false;
+    }
+    const TraversalRay r(ray);
+    // The build bounds the depth (see kMaxDepth in wide_bvh.cpp), so 7 entries per level suffice.
+    constexpr int kStackSize = 1024;
+    StackEntry stack[kStackSize];
+    int top = 0;
+    stack[top++] = {0, 0, 0.0f};
+    bool found = false;
+    float t_far = bvh_detail::far_limit(t_max);
+    alignas(32) float t_near[WideBvhNode::kWidth];
+    while (top > 0) {
+        const StackEntry entry = stack[--top];
+        if (entry.t_near > t_far) {
+            continue;  // a nearer hit was found after this entry was pushed
+        }
+        if (entry.count > 0) {
+            if (leaf(entry.child, entry.count, t_max, std::bool_constant<NodeTest::kAvx2>{})) {
+                if constexpr (kAnyHit) {
+                    return true;
+                }
+                found = true;
+                t_far = bvh_detail::far_limit(t_max);
+            }
+            continue;
+        }
+        const WideBvhNode& node = nodes_[entry.child];
+        unsigned mask = NodeTest::hits(node, r, t_far, t_near);
+        // Push the children far to near, so the nearest is visited first.
+        const int base = top;
+        while (mask != 0) {
+            const int i = __builtin_ctz(mask);
+            mask &= mask - 1;
+            const StackEntry e{node.child[i], node.count[i], t_near[i]};
+            int j = top++;
+            while (j > base && stack[j - 1].t_near < e.t_near) {
+                stack[j] = stack[j - 1];
+                --j;
+            }
+            stack[j] = e;
+        }
+    }
+    return found;
+}
+
+#ifdef GLINT_BVH_HAVE_AVX2_PATH
+template <bool kAnyHit, class Leaf>
+__attribute__((target("avx2,fma"))) bool WideBvh::traverse_avx2(const Ray& ray, double& t_max,
+                                                                Leaf& leaf) const {
+    return traverse<kAnyHit, bvh_detail::Avx2NodeTest>(ray, t_max, leaf);
+}
+#endif
+
+template <class Leaf>
+bool WideBvh::intersect(const Ray& ray, double& t_max, Leaf&& leaf) const {
+#ifdef GLINT_BVH_HAVE_AVX2_PATH
+    if (uses_avx2()) {
+        return traverse_avx2<false>(ray, t_max, leaf);
+    }
+#endif
+    return traverse<false, bvh_detail::ScalarNodeTest>(ray, t_max, leaf);
+}
+
+template <class Leaf>
+bool WideBvh::occluded(const Ray& ray, double t_max, Leaf&& leaf) const {
+#ifdef GLINT_BVH_HAVE_AVX2_PATH
+    if (uses_avx2()) {
+        return traverse_avx2<true>(ray, t_max, leaf);
+    }
+#endif
+    return traverse<true, bvh_detail::ScalarNodeTest>(ray, t_max, leaf);
+}
+
+}  // namespace glint

@@ -1,0 +1,227 @@
+// Mesh {type: mesh, file: bunny.obj}: a triangle mesh read from an OBJ or PLY file.
+#include "glint/geometry/mesh.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <stdexcept>
+
+#include "glint/geometry/triangle.hpp"
+#include "glint/scene/build_context.hpp"
+#include "glint/scene/params.hpp"
+
+namespace glint {
+namespace {
+
+bool usable_normal(const Vec3& n) {
+    const double l2 = length_squared(n);
+    return std::isfinite(l2) && l2 > 1e-30;
+}
+
+}  // namespace
+
+Mesh::Mesh(MeshData data) : positions_(std::move(data.positions)), normals_(std::move(data.normals)) {
+    const auto start = std::chrono::steady_clock::now();
+    triangles_.reserve(data.triangles.size());
+    for (const auto& tri : data.triangles) {
+        const Vec3 n =
+            cross(positions_[tri[1]] - positions_[tri[0]], positions_[tri[2]] - positions_[tri[0]]);
+        if (length_squared(n) > 0) {
+            triangles_.push_back(tri);
+        }
+    }
+    if (triangles_.empty()) {
+        throw std::invalid_argument("the mesh has no triangle with a non-zero area");
+    }
+    if (!normals_.empty()) {
+        // Broken normals (zero, NaN, infinite) become the area-weighted mean of the faces around them.
+        if (!std::all_of(normals_.begin(), normals_.end(), usable_normal)) {
+            std::vector<Vec3> from_faces(positions_.size());
+            for (const auto& tri : triangles_) {
+                const Vec3 n =
+                    cross(positions_[tri[1]] - positions_[tri[0]], positions_[tri[2]] - positions_[tri[0]]);
+                for (std::uint32_t v : tri) {
+                    from_faces[v] += n;
+                }
+            }
+            for (std::size_t v = 0; v < normals_.size(); ++v) {
+                if (!usable_normal(normals_[v])) {
+                    normals_[v] = from_faces[v];
+                }
+            }
+        }
+        for (Vec3& n : normals_) {
+            n = usable_normal(n) ? normalize(n) : Vec3{};  // zero: shade with the face's normal
+        }
+    }
+    std::vector<Bounds3> boxes(triangles_.size());
+    for (std::size_t i = 0; i < triangles_.size(); ++i) {
+        for (std::uint32_t v : triangles_[i]) {
+            boxes[i].grow(positions_[v]);
+        }
+    }
+    BvhBuildOptions options;
+    options.max_leaf_size = 2 * TriangleBlock::kLanes;
+    options.primitives_per_test = TriangleBlock::kLanes;
+    bvh_.build(boxes, options);
+    // Store the triangles in BVH order, so that a leaf is a contiguous run of the array.
+    std::vector<std::array<std::uint32_t, 3>> ordered(triangles_.size());
+    for (std::size_t i = 0; i < ordered.size(); ++i) {
+        ordered[i] = triangles_[bvh_.primitive_order()[i]];
+    }
+    triangles_ = std::move(ordered);
+    bvh_.remap_leaves([&](std::uint32_t first, std::uint32_t count) {
+        const auto block_start = static_cast<std::uint32_t>(blocks_.size());
+        for (std::uint32_t i = 0; i < count; ++i) {
+            if (i % TriangleBlock::kLanes == 0) {
+                blocks_.emplace_back();
+            }
+            const auto& tri = triangles_[first + i];
+            blocks_.back().set(static_cast<int>(i % TriangleBlock::kLanes), first + i, positions_[tri[0]],
+                               positions_[tri[1]], positions_[tri[2]]);
+        }
+        return block_start;
+    });
+    blocks_.shrink_to_fit();
+    area_cdf_.resize(triangles_.size());
+    double sum = 0;
+    for (std::size_t i = 0; i < triangles_.size(); ++i) {
+        const auto& tri = triangles_[i];
+        sum += 0.5 * length(cross(positions_[tri[1]] - positions_[tri[0]],
+                                  positions_[tri[2]] - positions_[tri[0]]));
+        area_cdf_[i] = sum;
+    }
+    build_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+std::size_t Mesh::memory_bytes() const {
+    return positions_.capacity() * sizeof(Vec3) + normals_.capacity() * sizeof(Vec3) +
+           triangles_.capacity() * sizeof(triangles_[0]) + blocks_.capacity() * sizeof(TriangleBlock) +
+           area_cdf_.capacity() * sizeof(double) + bvh_.memory_bytes();
+}
+
+void Mesh::fill_hit(std::uint32_t index, const Ray& ray, double t, double b0, double b1, double b2,
+                    Hit& hit) const {
+    (void)ray;
+    const auto& tri = triangles_[index];
+    const Vec3& p0 = positions_[tri[0]];
+    const Vec3& p1 = positions_[tri[1]];
+    const Vec3& p2 = positions_[tri[2]];
+    hit.t = t;
+    // The barycentric point lies on the triangle up to rounding, whatever t was.
+    hit.point = b0 * p0 + b1 * p1 + b2 * p2;
+    hit.normal = normalize(cross(p1 - p0, p2 - p0));
+    hit.shading_normal = hit.normal;
+    if (!normals_.empty()) {
+        const Vec3 n = b0 * normals_[tri[0]] + b1 * normals_[tri[1]] + b2 * normals_[tri[2]];
+        if (usable_normal(n)) {
+            const Vec3 unit = normalize(n);
+            hit.shading_normal = dot(unit, hit.normal) < 0 ? -unit : unit;
+        }
+    }
+    hit.uv = {b1, b2};
+    hit.error = kHitRelativeError *
+                std::max({max_component(abs(p0)), max_component(abs(p1)), max_component(abs(p2))});
+    hit.element = index;
+}
+
+bool Mesh::intersect(const Ray& ray, double t_max, Hit& hit) const {
+    const WatertightRay wray(ray);
+    TriangleHit best;
+    std::uint32_t best_index = 0;
+    const TriangleBlock* blocks = blocks_.data();
+    const bool found =
+        bvh_.intersect(ray, t_max, [&](std::uint32_t first, std::uint32_t count, double& t_limit, auto avx2) {
+            bool any = false;
+            const std::uint32_t end = first + (count + TriangleBlock::kLanes - 1) / TriangleBlock::kLanes;
+            for (std::uint32_t b = first; b < end; ++b) {
+                int lane = -1;
+#if defined(__x86_64__) || defined(__i386__)
+                if constexpr (decltype(avx2)::value) {
+                    lane = intersect_block_avx2(wray, blocks[b], t_limit, best);
+                } else {
+                    lane = intersect_block_scalar(wray, blocks[b], t_limit, best);
+                }
+#else
+                lane = intersect_block_scalar(wray, blocks[b], t_limit, best);
+#endif
+                if (lane >= 0) {
+                    t_limit = best.t;
+                    best_index = blocks[b].element[lane];
+                    any = true;
+                }
+            }
+            return any;
+        });
+    if (found) {
+        fill_hit(best_index, ray, best.t, best.b0, best.b1, best.b2, hit);
+    }
+    return found;
+}
+
+bool Mesh::occluded(const Ray& ray, double t_max) const {
+    const WatertightRay wray(ray);
+    const TriangleBlock* blocks = blocks_.data();
+    return bvh_.occluded(
+        ray, t_max, [&](std::uint32_t first, std::uint32_t count, double t_limit, auto avx2) {
+            TriangleHit unused;
+            const std::uint32_t end = first + (count + TriangleBlock::kLanes - 1) / TriangleBlock::kLanes;
+            for (std::uint32_t b = first; b < end; ++b) {
+#if defined(__x86_64__) || defined(__i386__)
+                if constexpr (decltype(avx2)::value) {
+                    if (intersect_block_avx2(wray, blocks[b], t_limit, unused) >= 0) {
+                        return true;
+                    }
+                    continue;
+                }
+#endif
+                if (intersect_block_scalar(wray, blocks[b], t_limit, unused) >= 0) {
+                    return true;
+                }
+            }
+            return false;
+        });
+}
+
+bool Mesh::intersect_triangle(std::uint32_t index, const Ray& ray, double t_max, Hit& hit) const {
+    const auto& tri = triangles_[index];
+    TriangleHit h;
+    if (!glint::intersect_triangle(WatertightRay(ray), positions_[tri[0]], positions_[tri[1]],
+                                   positions_[tri[2]], t_max, h)) {
+        return false;
+    }
+    fill_hit(index, ray, h.t, h.b0, h.b1, h.b2, hit);
+    return true;
+}
+
+std::optional<ShapeSample> Mesh::sample_area(Point2 u) const {
+    // A triangle with probability proportional to its area, then a uniform point in it.
+    const double target = u.x * area();
+    const auto it = std::upper_bound(area_cdf_.begin(), area_cdf_.end(), target);
+    const std::size_t index =
+        std::min<std::size_t>(static_cast<std::size_t>(it - area_cdf_.begin()), area_cdf_.size() - 1);
+    const double before = index == 0 ? 0 : area_cdf_[index - 1];
+    const double width = area_cdf_[index] - before;
+    const double ux =
+        width > 0 ? std::clamp((target - before) / width, 0.0, 1.0) : 0.5;  // reuse u.x's remainder
+    const double su = std::sqrt(ux);
+    const double b1 = 1 - su;
+    const double b2 = u.y * su;
+    const auto& tri = triangles_[index];
+    const Vec3& p0 = positions_[tri[0]];
+    const Vec3& p1 = positions_[tri[1]];
+    const Vec3& p2 = positions_[tri[2]];
+    const Vec3 point = (1 - b1 - b2) * p0 + b1 * p1 + b2 * p2;
+    return ShapeSample{point, normalize(cross(p1 - p0, p2 - p0)), 1 / area()};
+}
+
+std::unique_ptr<Shape> Mesh::create(Params& params, const BuildContext& context) {
+    const std::string file = params.string("file");
+    MeshData data = load_mesh_file(context.resolve(file), params.pos_of("file"));
+    try {
+        return std::make_unique<Mesh>(std::move(data));
+    } catch (const std::invalid_argument& e) {
+        params.fail("file", "mesh '" + file + "': " + e.what());
+    }
+}
+
+}  // namespace glint

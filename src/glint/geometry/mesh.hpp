@@ -1,0 +1,59 @@
+#pragma once
+
+#include <array>
+#include <span>
+#include <vector>
+
+#include "glint/accel/wide_bvh.hpp"
+#include "glint/geometry/mesh_io/mesh_data.hpp"
+#include "glint/geometry/shape.hpp"
+#include "glint/geometry/triangle_block.hpp"
+
+namespace glint {
+
+// A triangle mesh: one Shape with its own BVH over its triangles (so the scene's BVH sees one leaf,
+// and an instance of the mesh shares this BVH). Triangles are tested with the watertight test of
+// geometry/triangle.hpp in double precision, from flat arrays. Vertex normals, when the file has them,
+// are interpolated for shading (hit.element is the index of the triangle hit).
+class Mesh final : public Shape {
+  public:
+    // Takes a loaded mesh: drops zero-area triangles, recomputes missing or broken (zero, NaN) vertex
+    // normals from the surrounding faces, and builds the BVH. Throws std::invalid_argument if no
+    // triangle has an area.
+    explicit Mesh(MeshData data);
+
+    Bounds3 bounds() const override { return bvh_.bounds(); }
+    bool intersect(const Ray& ray, double t_max, Hit& hit) const override;
+    bool occluded(const Ray& ray, double t_max) const override;
+    double area() const override { return area_cdf_.empty() ? 0 : area_cdf_.back(); }
+    std::optional<ShapeSample> sample_area(Point2 u) const override;
+
+    // Tests the single triangle `index` (what the Embree backend calls to redo its hit in double).
+    bool intersect_triangle(std::uint32_t index, const Ray& ray, double t_max, Hit& hit) const;
+
+    // For other backends and statistics. Triangles are in BVH order; hit.element indexes this list.
+    std::span<const Vec3> positions() const { return positions_; }
+    std::span<const std::array<std::uint32_t, 3>> triangles() const { return triangles_; }
+    const WideBvh& bvh() const { return bvh_; }
+    double build_seconds() const { return build_seconds_; }
+    std::size_t memory_bytes() const;
+
+    // {type: mesh, file: name.obj | name.ply}; the file is found relative to the scene file.
+    static std::unique_ptr<Shape> create(Params& params, const BuildContext& context);
+
+  private:
+    void fill_hit(std::uint32_t index, const Ray& ray, double t, double b0, double b1, double b2,
+                  Hit& hit) const;
+
+    std::vector<Vec3> positions_;
+    std::vector<Vec3> normals_;  // empty (flat shading) or one unit (or zero: use the face) per position
+    std::vector<std::array<std::uint32_t, 3>> triangles_;
+    // The leaves' triangles, four to a block, with their vertices copied in: what the hot loop reads.
+    // A BVH leaf of n triangles is ⌈n/4⌉ consecutive blocks starting at its `first`.
+    std::vector<TriangleBlock> blocks_;
+    std::vector<double> area_cdf_;  // running sum of triangle areas, for sample_area
+    WideBvh bvh_;
+    double build_seconds_ = 0;
+};
+
+}  // namespace glint

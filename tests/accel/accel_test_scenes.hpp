@@ -1,0 +1,148 @@
+// Scenes and rays shared by the accelerator tests: random spheres, closed tessellated meshes, the bunny.
+#pragma once
+
+#include <algorithm>
+#include <map>
+#include <memory>
+#include <random>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "glint/accel/accelerator.hpp"
+#include "glint/geometry/mesh.hpp"
+#include "glint/geometry/sphere.hpp"
+
+namespace glint::test {
+
+inline Vec3 random_in_box(std::mt19937_64& rng, const Vec3& lo, const Vec3& hi) {
+    std::uniform_real_distribution<double> u(0, 1);
+    return {lo.x + u(rng) * (hi.x - lo.x), lo.y + u(rng) * (hi.y - lo.y), lo.z + u(rng) * (hi.z - lo.z)};
+}
+
+inline Vec3 random_direction(std::mt19937_64& rng) {
+    std::normal_distribution<double> g(0, 1);
+    while (true) {
+        const Vec3 d{g(rng), g(rng), g(rng)};
+        if (length_squared(d) > 1e-6) {
+            return normalize(d);
+        }
+    }
+}
+
+inline std::vector<std::unique_ptr<Shape>> random_spheres(int count, std::uint64_t seed) {
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> radius(0.05, 0.6);
+    std::vector<std::unique_ptr<Shape>> shapes;
+    for (int i = 0; i < count; ++i) {
+        shapes.push_back(
+            std::make_unique<Sphere>(random_in_box(rng, {-10, -10, -10}, {10, 10, 10}), radius(rng)));
+    }
+    return shapes;
+}
+
+// A closed sphere of triangles: a subdivided octahedron projected on the unit sphere, vertices shared.
+inline MeshData tessellated_sphere(int subdivisions, double radius = 1, const Vec3& center = {}) {
+    MeshData mesh;
+    mesh.positions = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    mesh.triangles = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
+    for (int s = 0; s < subdivisions; ++s) {
+        std::vector<std::array<std::uint32_t, 3>> finer;
+        std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> midpoint;
+        auto mid = [&](std::uint32_t a, std::uint32_t b) {
+            const auto key = std::minmax(a, b);
+            const auto [it, inserted] =
+                midpoint.try_emplace(key, static_cast<std::uint32_t>(mesh.positions.size()));
+            if (inserted) {
+                mesh.positions.push_back(normalize(mesh.positions[a] + mesh.positions[b]));
+            }
+            return it->second;
+        };
+        for (const auto& t : mesh.triangles) {
+            const std::uint32_t ab = mid(t[0], t[1]), bc = mid(t[1], t[2]), ca = mid(t[2], t[0]);
+            finer.push_back({t[0], ab, ca});
+            finer.push_back({ab, t[1], bc});
+            finer.push_back({ca, bc, t[2]});
+            finer.push_back({ab, bc, ca});
+        }
+        mesh.triangles = std::move(finer);
+    }
+    for (Vec3& p : mesh.positions) {
+        p = center + radius * p;
+    }
+    return mesh;
+}
+
+// A closed axis-aligned cube [lo, hi]³ of 12 triangles, outward winding.
+inline MeshData cube_mesh(double lo, double hi) {
+    MeshData mesh;
+    for (int i = 0; i < 8; ++i) {
+        mesh.positions.push_back({(i & 1) ? hi : lo, (i & 2) ? hi : lo, (i & 4) ? hi : lo});
+    }
+    const std::uint32_t quads[6][4] = {{0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4},
+                                       {2, 6, 7, 3}, {0, 2, 3, 1}, {4, 5, 7, 6}};
+    for (const auto& q : quads) {
+        mesh.triangles.push_back({q[0], q[1], q[2]});
+        mesh.triangles.push_back({q[0], q[2], q[3]});
+    }
+    return mesh;
+}
+
+inline std::vector<const Shape*> pointers(const std::vector<std::unique_ptr<Shape>>& shapes) {
+    std::vector<const Shape*> out;
+    for (const auto& s : shapes) {
+        out.push_back(s.get());
+    }
+    return out;
+}
+
+// Rays from random points around `box`, aimed at random points inside it (so most of them hit).
+inline std::vector<Ray> rays_into(const Bounds3& box, int count, std::uint64_t seed) {
+    std::mt19937_64 rng(seed);
+    const Vec3 margin = box.extent();
+    std::vector<Ray> rays;
+    for (int i = 0; i < count; ++i) {
+        const Vec3 origin = random_in_box(rng, box.lo - margin, box.hi + margin);
+        const Vec3 target = random_in_box(rng, box.lo, box.hi);
+        rays.push_back({origin, target - origin});
+    }
+    return rays;
+}
+
+// Compares two accelerators on `rays`: same hit or miss, same primitive and element, same t.
+// hit.element is compared only where it means something: on meshes.
+// Embree's leeway, for a backend that chooses triangles in float: a different triangle of the same
+// mesh is accepted at the same t (triangles sharing an edge), and a shadow ray must be occluded only
+// when it reaches a little further past the hit.
+struct Leeway {
+    bool tied_elements_allowed = false;
+    double occlusion_margin = 1e-9;  // relative
+};
+inline void expect_same_hits(const Accelerator& reference, const Accelerator& tested,
+                             const std::vector<Ray>& rays, const std::vector<const Shape*>& shapes,
+                             Leeway leeway = {}) {
+    int hits = 0;
+    for (const Ray& ray : rays) {
+        Hit a, b;
+        const bool found_a = reference.intersect(ray, kInf, a);
+        const bool found_b = tested.intersect(ray, kInf, b);
+        ASSERT_EQ(found_a, found_b) << "ray " << ray.origin << " + t " << ray.direction;
+        EXPECT_EQ(reference.occluded(ray, kInf), found_a);
+        EXPECT_EQ(tested.occluded(ray, kInf), found_b);
+        if (found_a) {
+            ++hits;
+            EXPECT_EQ(a.primitive, b.primitive);
+            if (dynamic_cast<const Mesh*>(shapes[a.primitive]) != nullptr) {
+                if (!leeway.tied_elements_allowed || std::abs(a.t - b.t) > 1e-9 * a.t) {
+                    EXPECT_EQ(a.element, b.element);
+                }
+            }
+            EXPECT_NEAR(a.t, b.t, 1e-12 * a.t);
+            // A shadow ray stopping just short of the hit is not occluded by it, just past it is.
+            EXPECT_EQ(tested.occluded(ray, a.t * (1 + leeway.occlusion_margin)), true);
+        }
+    }
+    EXPECT_GT(hits, static_cast<int>(rays.size()) / 10);  // the test means something only if rays hit
+}
+
+}  // namespace glint::test
