@@ -6,11 +6,11 @@
 #include <arpa/inet.h>
 #include <gtest/gtest.h>
 
-#include "glint/sampling/sampler.hpp"
 #include <httplib.h>
 #include <netinet/in.h>
 #include <sys/socket.h>
 #include <unistd.h>
+#include "glint/sampling/sampler.hpp"
 
 #include <algorithm>
 #include <atomic>
