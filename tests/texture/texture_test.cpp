@@ -94,7 +94,7 @@ void expect_rgb_near(const Rgb& a, const Rgb& b, double tolerance) {
 TEST(ImageTexture, BilinearLookupOfAnExrFile) {
     const auto path = temp_file("tiny.exr");
     write_image(two_by_two(), path);
-    const ImageTexture texture(load_texture_image(path));
+    const ImageTexture texture(read_image(path));
     // Texel centres: u = ¼, ¾; v = ¾ is the top row.
     expect_rgb_near(texture.lookup({0.25, 0.75}), {1, 0, 0}, 1e-7);
     expect_rgb_near(texture.lookup({0.75, 0.75}), {0, 1, 0}, 1e-7);
@@ -116,7 +116,7 @@ TEST(ImageTexture, EightBitFilesAreSrgbDecoded) {
     image.rgb = {0.5f, 0.0f, 1.0f};  // written as sRGB bytes 188, 0, 255
     const auto path = temp_file("tiny.png");
     write_image(image, path);
-    const ImageTexture texture(load_texture_image(path));
+    const ImageTexture texture(read_image(path));
     // 188 decodes to ((188/255 + 0.055)/1.055)^2.4 = 0.5029: linear again, to the byte's precision.
     expect_rgb_near(texture.lookup({0.3, 0.3}), {0.5029, 0, 1}, 1e-4);
     EXPECT_NEAR(srgb_to_linear(0.04045), 0.04045 / 12.92, 1e-15);  // the linear segment's end
@@ -125,10 +125,10 @@ TEST(ImageTexture, EightBitFilesAreSrgbDecoded) {
 }
 
 TEST(ImageTexture, MissingOrUnreadableFilesAreErrors) {
-    EXPECT_THROW(load_texture_image(temp_file("does-not-exist.png")), std::runtime_error);
+    EXPECT_THROW(read_image(temp_file("does-not-exist.png")), std::runtime_error);
     const auto path = temp_file("not-an-image.png");
     std::ofstream(path) << "this is text";
-    EXPECT_THROW(load_texture_image(path), std::runtime_error);
+    EXPECT_THROW(read_image(path), std::runtime_error);
     std::filesystem::remove(path);
 }
 

@@ -37,6 +37,14 @@ std::vector<unsigned char> encode_exr(const Image& image);
 // Reads a PFM written by encode_pfm (or any 3-channel PFM); throws std::runtime_error otherwise.
 Image read_pfm(const std::filesystem::path& path);
 
+// Reads an image as linear RGB: PNG, JPEG, BMP, TGA (8 or 16 bit, sRGB-decoded) and Radiance HDR through
+// stb_image, OpenEXR through tinyexr and PFM (all three already linear). Throws std::runtime_error with
+// the reason when the file is missing or unreadable.
+Image read_image(const std::filesystem::path& path);
+
+// The sRGB transfer function's inverse (IEC 61966-2-1): an encoded value in [0, 1] to linear.
+double srgb_to_linear(double encoded);
+
 // Writes bytes to `path` atomically (temporary file + rename).
 void write_file_atomically(const std::filesystem::path& path, const std::vector<unsigned char>& bytes);
 

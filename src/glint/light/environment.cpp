@@ -1,37 +1,11 @@
 #include "glint/light/environment.hpp"
 
-#include <tinyexr.h>
-
-#include <cstdlib>
-
 #include "glint/image/image_io.hpp"
 #include "glint/sampling/warps.hpp"
 #include "glint/scene/build_context.hpp"
 #include "glint/scene/params.hpp"
 
 namespace glint {
-
-namespace {
-Image load_exr(const std::filesystem::path& path) {
-    float* rgba = nullptr;
-    int width = 0;
-    int height = 0;
-    const char* error = nullptr;
-    if (LoadEXR(&rgba, &width, &height, path.c_str(), &error) != TINYEXR_SUCCESS) {
-        std::string message = error ? error : "unreadable";
-        FreeEXRErrorMessage(error);
-        throw std::runtime_error(message);
-    }
-    Image image(width, height);
-    for (size_t i = 0; i < static_cast<size_t>(width) * static_cast<size_t>(height); ++i) {
-        for (size_t c = 0; c < 3; ++c) {
-            image.rgb[3 * i + c] = rgba[4 * i + c];
-        }
-    }
-    std::free(rgba);  // NOLINT: tinyexr allocates with malloc
-    return image;
-}
-}  // namespace
 
 EnvironmentLight::EnvironmentLight(const Rgb& bottom, const Rgb& top) : bottom_(bottom), top_(top) {}
 
@@ -139,7 +113,7 @@ std::unique_ptr<Light> EnvironmentLight::create(Params& params, const BuildConte
         }
         Image image;
         try {
-            image = exr ? load_exr(file) : read_pfm(file);
+            image = read_image(file);
         } catch (const std::runtime_error& e) {
             params.fail("image",
                         std::string("cannot read ").append(file.string()).append(": ").append(e.what()));

@@ -84,4 +84,22 @@ std::string closest_match(const std::string& word, const std::vector<std::string
     return best;
 }
 
+std::string join_words(const std::vector<std::string>& words) {
+    std::string out;
+    for (const std::string& w : words) {
+        out += (out.empty() ? "" : ", ") + w;
+    }
+    return out;
+}
+
+std::string unknown_name_message(const std::string& what, const std::string& word,
+                                 const std::vector<std::string>& known, const std::string& list_label) {
+    std::string message = "unknown " + what + " '" + word + "'";
+    const std::string guess = closest_match(word, known);
+    if (!guess.empty()) {
+        message += "; did you mean '" + guess + "'?";
+    }
+    return message + " (" + list_label + ": " + join_words(known) + ")";
+}
+
 }  // namespace glint

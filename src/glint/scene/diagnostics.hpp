@@ -44,4 +44,14 @@ std::string format_diagnostic(const SourcePos& pos, const std::string& message);
 // The closest of `candidates` to `word` by edit distance, or "" if none is close enough to suggest.
 std::string closest_match(const std::string& word, const std::vector<std::string>& candidates);
 
+// "a, b, c", for the lists of valid names in messages.
+std::string join_words(const std::vector<std::string>& words);
+
+// The message for a name that is not one of `known`:
+//   unknown <what> '<word>'; did you mean '<closest>'? (<list_label>: a, b, c)
+// The suggestion appears only when a known name is close.
+std::string unknown_name_message(const std::string& what, const std::string& word,
+                                 const std::vector<std::string>& known,
+                                 const std::string& list_label = "known");
+
 }  // namespace glint

@@ -5,18 +5,6 @@
 
 namespace glint {
 
-namespace {
-
-std::string join(const std::vector<std::string>& words) {
-    std::string out;
-    for (const std::string& w : words) {
-        out += (out.empty() ? "" : ", ") + w;
-    }
-    return out;
-}
-
-}  // namespace
-
 double node_number(const Node& node, const std::string& what) {
     if (!node.is_scalar()) {
         throw SceneError(node.pos, what + " must be a number, not " + node.describe());
@@ -229,7 +217,7 @@ std::string Params::choice(const std::string& key, const std::vector<std::string
     if (!guess.empty()) {
         message += "; did you mean '" + guess + "'?";
     }
-    fail(key, message + " (expected one of: " + join(choices) + ")");
+    fail(key, message + " (expected one of: " + join_words(choices) + ")");
 }
 
 void Params::finish() const {
@@ -244,7 +232,7 @@ void Params::finish() const {
         if (!guess.empty()) {
             message += "; did you mean '" + guess + "'?";
         }
-        message += " (expected one of: " + join(known) + ")";
+        message += " (expected one of: " + join_words(known) + ")";
         throw SceneError(map_->key_positions[i], message);
     }
 }

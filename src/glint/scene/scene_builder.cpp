@@ -11,37 +11,11 @@
 #include "glint/scene/params.hpp"
 #include "glint/scene/scene.hpp"
 #include "glint/scene/scene_desc.hpp"
+#include "glint/scene/table_lookup.hpp"
 
 namespace glint {
 
 namespace {
-
-std::string join(const std::vector<std::string>& words) {
-    std::string out;
-    for (const std::string& w : words) {
-        out += (out.empty() ? "" : ", ") + w;
-    }
-    return out;
-}
-
-// Finds `type` in a table, or throws an error that lists the known names.
-template <typename Entry>
-const Entry& lookup(const std::vector<Entry>& table, Params& params, const std::string& concept_name) {
-    const std::string type = params.string("type");
-    std::vector<std::string> names;
-    for (const Entry& entry : table) {
-        if (entry.name == type) {
-            return entry;
-        }
-        names.push_back(entry.name);
-    }
-    std::string message = "unknown " + concept_name + " type '" + type + "'";
-    const std::string guess = closest_match(type, names);
-    if (!guess.empty()) {
-        message += "; did you mean '" + guess + "'?";
-    }
-    params.fail("type", message + " (known: " + join(names) + ")");
-}
 
 // A name checked against a list, for command-line overrides and `render:` keys.
 std::string check_name(const std::string& value, const std::vector<std::string>& names,
@@ -51,12 +25,7 @@ std::string check_name(const std::string& value, const std::vector<std::string>&
             return value;
         }
     }
-    std::string message = "unknown " + what + " '" + value + "'";
-    const std::string guess = closest_match(value, names);
-    if (!guess.empty()) {
-        message += "; did you mean '" + guess + "'?";
-    }
-    throw SceneError(pos, message + " (known: " + join(names) + ")");
+    throw SceneError(pos, unknown_name_message(what, value, names));
 }
 
 std::vector<std::string> accelerator_names() {
@@ -155,7 +124,7 @@ Scene build_scene(const SceneDesc& desc, const RenderOverrides& overrides) {
         if (!p.has("type")) {
             scene.camera = camera_table().front().create(p, context, film);
         } else {
-            scene.camera = lookup(camera_table(), p, "camera").create(p, context, film);
+            scene.camera = lookup_type(camera_table(), p, "camera").create(p, context, film);
         }
         p.finish();
     }
@@ -171,7 +140,7 @@ Scene build_scene(const SceneDesc& desc, const RenderOverrides& overrides) {
     std::map<std::string, std::uint32_t> material_index;
     const auto build_material = [&](const Node& node, const std::string& what) {
         Params p(node, what);
-        auto material = lookup(material_table(), p, "material").create(p, context);
+        auto material = lookup_type(material_table(), p, "material").create(p, context);
         p.finish();
         scene.materials.push_back(std::move(material));
         return static_cast<std::uint32_t>(scene.materials.size() - 1);
@@ -206,13 +175,9 @@ Scene build_scene(const SceneDesc& desc, const RenderOverrides& overrides) {
             for (const auto& [n, index] : material_index) {
                 names.push_back(n);
             }
-            std::string message = "unknown material '" + name + "'";
-            const std::string guess = closest_match(name, names);
-            if (!guess.empty()) {
-                message += "; did you mean '" + guess + "'?";
-            }
-            throw SceneError(node->pos, message + (names.empty() ? " (the scene defines no materials)"
-                                                                 : " (defined: " + join(names) + ")"));
+            throw SceneError(
+                node->pos, names.empty() ? "unknown material '" + name + "' (the scene defines no materials)"
+                                         : unknown_name_message("material", name, names, "defined"));
         }
         return found->second;
     };
@@ -223,7 +188,7 @@ Scene build_scene(const SceneDesc& desc, const RenderOverrides& overrides) {
         }
         for (size_t i = 0; i < objects->items.size(); ++i) {
             Params p(objects->items[i], "objects[" + std::to_string(i) + "]");
-            const ShapeEntry& entry = lookup(shape_table(), p, "object");
+            const ShapeEntry& entry = lookup_type(shape_table(), p, "object");
             Params shape_params(objects->items[i], entry.name);
             shape_params.string("type");
             auto shape = entry.create(shape_params, context);
@@ -250,7 +215,7 @@ Scene build_scene(const SceneDesc& desc, const RenderOverrides& overrides) {
     // {type: area} lights add their shape to the objects, with the light's emitting material.
     std::int32_t next_light_index = -1;
     context.add_object = [&](Params& shape_params, std::unique_ptr<Material> material) {
-        const ShapeEntry& entry = lookup(shape_table(), shape_params, "shape");
+        const ShapeEntry& entry = lookup_type(shape_table(), shape_params, "shape");
         auto shape = apply_transform(shape_params, entry.create(shape_params, context));
         shape_params.finish();
         scene.shapes.push_back(std::move(shape));
@@ -267,7 +232,7 @@ Scene build_scene(const SceneDesc& desc, const RenderOverrides& overrides) {
         }
         for (size_t i = 0; i < lights->items.size(); ++i) {
             Params p(lights->items[i], "lights[" + std::to_string(i) + "]");
-            const LightEntry& entry = lookup(light_table(), p, "light");
+            const LightEntry& entry = lookup_type(light_table(), p, "light");
             Params light_params(lights->items[i], entry.name + " light");
             light_params.string("type");
             next_light_index = static_cast<std::int32_t>(scene.lights.size());

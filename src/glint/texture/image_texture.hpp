@@ -29,12 +29,4 @@ class ImageTexture final : public Texture {
     double min_ = 0, max_ = 0;
 };
 
-// Reads a texture image as linear RGB: PNG, JPEG, BMP, TGA (8 or 16 bit, sRGB-decoded) and Radiance HDR
-// through stb_image, OpenEXR through tinyexr (both already linear). Throws std::runtime_error with the
-// reason when the file is missing or unreadable.
-Image load_texture_image(const std::filesystem::path& path);
-
-// The sRGB transfer function's inverse (IEC 61966-2-1): an encoded value in [0, 1] to linear.
-double srgb_to_linear(double encoded);
-
 }  // namespace glint

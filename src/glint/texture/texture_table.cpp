@@ -4,6 +4,7 @@
 
 #include "glint/scene/build_context.hpp"
 #include "glint/scene/params.hpp"
+#include "glint/scene/table_lookup.hpp"
 #include "glint/texture/checker.hpp"
 #include "glint/texture/image_texture.hpp"
 #include "glint/texture/noise.hpp"
@@ -39,22 +40,8 @@ std::shared_ptr<const Texture> read_texture(Params& params, const std::string& k
         texture = std::make_shared<ConstantTexture>(node_color(*node, params.what() + "." + key));
     } else {
         Params texture_params(*node, params.what() + "." + key);
-        const std::string type = texture_params.string("type");
-        std::vector<std::string> names;
-        const auto entry = std::find_if(texture_table().begin(), texture_table().end(),
-                                        [&](const TextureEntry& e) { return e.name == type; });
-        if (entry == texture_table().end()) {
-            std::string known;
-            for (const TextureEntry& e : texture_table()) {
-                names.push_back(e.name);
-                known += (known.empty() ? "" : ", ") + e.name;
-            }
-            const std::string guess = closest_match(type, names);
-            texture_params.fail("type", "unknown texture type '" + type + "'" +
-                                            (guess.empty() ? "" : "; did you mean '" + guess + "'?") +
-                                            " (known: " + known + ")");
-        }
-        texture = entry->create(texture_params, context);
+        const TextureEntry& entry = lookup_type(texture_table(), texture_params, "texture");
+        texture = entry.create(texture_params, context);
         texture_params.finish();
     }
     if (texture->min_value() < 0) {
