@@ -11,21 +11,25 @@
 namespace glint {
 
 namespace {
-// Cell index along one axis. The 1e-9 shift keeps surfaces that lie exactly on a cell boundary (the
-// floor y = 0 under a solid checker) in one cell, instead of speckled by the sign of rounding errors.
-long long cell(double x) {
-    return static_cast<long long>(std::floor(x + 1e-9));
+// Parity (0 or 1) of the cell index along one axis, computed in floating point: converting the index to
+// an integer would overflow far out on an infinite plane (beyond 2⁶³), and beyond 2⁵³ every double is an
+// even integer anyway. The 1e-9 shift keeps surfaces that lie exactly on a cell boundary (the floor
+// y = 0 under a solid checker) in one cell, instead of speckled by the sign of rounding errors.
+int cell_parity(double x) {
+    const double cell = std::floor(x + 1e-9);
+    return cell - 2 * std::floor(cell / 2) == 1 ? 1 : 0;
 }
 }  // namespace
 
 Rgb CheckerTexture::evaluate(const Hit& hit) const {
-    long long sum = 0;
+    int parity = 0;
     if (space_ == Space::Uv) {
-        sum = cell(hit.uv.x * scale_) + cell(hit.uv.y * scale_);
+        parity = cell_parity(hit.uv.x * scale_) ^ cell_parity(hit.uv.y * scale_);
     } else {
-        sum = cell(hit.point.x * scale_) + cell(hit.point.y * scale_) + cell(hit.point.z * scale_);
+        parity = cell_parity(hit.point.x * scale_) ^ cell_parity(hit.point.y * scale_) ^
+                 cell_parity(hit.point.z * scale_);
     }
-    return (sum & 1) == 0 ? even_->evaluate(hit) : odd_->evaluate(hit);
+    return parity == 0 ? even_->evaluate(hit) : odd_->evaluate(hit);
 }
 
 std::shared_ptr<const Texture> CheckerTexture::create(Params& params, const BuildContext& context) {
