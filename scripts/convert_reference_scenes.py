@@ -29,8 +29,10 @@ def vec(v):
 # The reference materials as glint materials (docs/scene-format.md, "materials").
 MATERIALS = {
     "lambertian": lambda m: f"{{type: matte, albedo: {vec(m['albedo'])}}}",
-    "metal": lambda m: f"{{type: metal, albedo: {vec(m['albedo'])}, fuzz: {num(m['fuzz'])}}}",
-    "dielectric": lambda m: f"{{type: dielectric, ior: {num(m['ir'])}}}",
+    # The book's own lobes: its metal is glint's fuzzy-metal (mirror direction + fuzz × a random unit
+    # vector, no Fresnel), its dielectric chooses reflection with Schlick's approximation.
+    "metal": lambda m: f"{{type: fuzzy-metal, albedo: {vec(m['albedo'])}, fuzz: {num(m['fuzz'])}}}",
+    "dielectric": lambda m: f"{{type: dielectric, ior: {num(m['ir'])}, fresnel: schlick}}",
 }
 
 
@@ -46,11 +48,12 @@ def convert_rtiow(data, defocus=True):
         "# Camera: vfov 20°, thin lens of radius focus_dist · tan(defocus_angle / 2) focused at 10. Light: the",
         "# book's sky, white at the nadir to (0.5, 0.7, 1) at the zenith, lerped by 0.5 (dir.y + 1), as an",
         "# environment light (so it also lights the scene, as in the book). Materials: lambertian → matte,",
-        "# metal (fuzz) → metal with `fuzz` (glint's metal is GGX with fuzz as its roughness, where the book",
-        "# jitters the mirror direction by fuzz × a random point in the unit ball: same look, not the same",
-        "# lobe), dielectric → dielectric (the book uses Schlick's Fresnel approximation, glint the exact one).",
-        "# The book's integrator is a path tracer without light sampling; glint's path tracer with next-event",
-        "# estimation and MIS converges to the same image.",
+        "# metal (albedo, fuzz) → fuzzy-metal (the book's lobe: the mirror direction plus fuzz × a random",
+        "# unit vector, absorbed below the surface), dielectric → dielectric with `fresnel: schlick` (the",
+        "# book's reflect/refract choice). The book's integrator is a path tracer without light sampling;",
+        "# glint's path tracer adds next-event estimation with MIS at the matte spheres, which converges to",
+        "# the same image (fuzzy-metal and glass are sampled like the book, as delta lobes). Not the book's:",
+        "# its t_min = 0.001 (glint offsets ray origins by the hit's error bound) and its gamma-2 output.",
         "# Full quality (the book's settings):",
         f"#   glint render examples/rtiow-final.yaml --width {width} --height {height} --spp {cam['samples_per_pixel']}"
         f" --max-depth {cam['max_depth']} -o rtiow-final.png",
