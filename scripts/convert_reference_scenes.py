@@ -57,7 +57,9 @@ def convert_rtiow(data, defocus=True):
         "# Full quality (the book's settings):",
         f"#   glint render examples/rtiow-final.yaml --width {width} --height {height} --spp {cam['samples_per_pixel']}"
         f" --max-depth {cam['max_depth']} -o rtiow-final.png",
-        f"render: {{width: 200, height: 113, samples: 4, integrator: path, max_depth: {cam['max_depth']}}}",
+        "# Pixels: the book's independent uniform offsets in the pixel square (sampler random, box pixels).",
+        f"render: {{width: 200, height: 113, samples: 4, sampler: random, integrator: path,"
+        f" max_depth: {cam['max_depth']}}}",
         f"camera: {{type: thin-lens, eye: {vec(cam['lookfrom'])}, look_at: {vec(cam['lookat'])}, up: {vec(cam['vup'])},"
         f" fov: {num(cam['vfov'])}, lens_radius: {num(lens_radius)}, focus_distance: {num(cam['focus_dist'])}}}"
         if defocus else
