@@ -92,11 +92,15 @@ def convert_smallpt(data):
         "# plane, so Frnt is left out. That changes no radiance: Frnt is black (albedo 0, no emission), and",
         "# a ray leaving through its place sees the black background instead.",
         f"# fov = 2 atan(0.5135 / 2 / |cam.d|) = {fov:.4f}°; pixels are square (cx = w · .5135 / h).",
-        "# Materials: DIFF → matte, SPEC → mirror, REFR → dielectric of index 1.5 (smallpt uses Schlick's",
-        "# approximation and its own reflect/refract probabilities; both estimate the same light), and the",
-        "# light 'Lite' (emission 12, colour 0) → an area light on its sphere, which the ceiling mostly covers.",
-        "# Not reproduced: smallpt's 2×2 sub-pixels with a tent filter and per-sub-pixel clamping to [0, 1],",
-        "# and the 0.999 colour of its glass (glint's dielectric is clear: 0.1 % more light per crossing).",
+        "# Materials: DIFF → matte, SPEC → mirror, REFR → dielectric of index 1.5 with `fresnel:",
+        "# schlick-outside` (smallpt's Schlick reflectance, its cosine taken in the air; smallpt traces both",
+        "# lobes up to depth 2 and then picks one with P = .25 + .5 Re, weighted Re/P or Tr/(1 − P): the same",
+        "# expectation as glint's choice with probability Re), and the light 'Lite' (emission 12, colour 0)",
+        "# → an area light on its sphere, which the ceiling mostly covers.",
+        "# Not reproduced: smallpt's 2×2 sub-pixels with a tent filter and per-sub-pixel clamping to [0, 1]",
+        "# (a clamp of a noisy mean: its expected value depends on the sample count, so no unbiased renderer",
+        "# converges to it), the 0.999 colour of its glass (glint's dielectric is clear: 0.1 % more light",
+        "# per crossing), and its unbounded depth (glint stops at max_depth 50, after Russian roulette).",
         "# Full quality (smallpt's size; `./smallpt 64` takes 64 spp):",
         f"#   glint render examples/smallpt.yaml --width {width} --height {height} --spp 64 -o smallpt.png",
         "render: {width: 256, height: 192, samples: 4, integrator: path, max_depth: 50}",
@@ -121,7 +125,7 @@ def convert_smallpt(data):
         elif kind == "REFR":
             # smallpt multiplies light through glass by its colour (0.999) at each hit; glint's
             # dielectric is clear (said in the header).
-            material = f"{{type: dielectric, ior: {num(s['ior'])}}}"
+            material = f"{{type: dielectric, ior: {num(s['ior'])}, fresnel: schlick-outside}}"
         else:
             raise ValueError(f"unknown smallpt material {kind}")
         out.append(f"  - {{type: sphere, center: {vec(s['center'])}, radius: {num(s['radius'])},"

@@ -112,8 +112,8 @@ TEST(Schlick, NormalIncidenceGivesR0AndGrazingGivesOne) {
 
 TEST(Schlick, TheDielectricReflectsWithSchlicksProbability) {
     const Hit hit = test_hit();
-    const Dielectric schlick_glass(1.5, Rgb(), true);
-    const Dielectric exact_glass(1.5, Rgb(), false);
+    const Dielectric schlick_glass(1.5, Rgb(), Dielectric::Fresnel::Schlick);
+    const Dielectric exact_glass(1.5, Rgb(), Dielectric::Fresnel::Exact);
     // From outside (n₁ = 1) and from inside at an angle without total internal reflection; the book's
     // cosine is wo's own.
     for (const double side : {1.0, -1.0}) {
@@ -140,9 +140,27 @@ TEST(Schlick, TheDielectricReflectsWithSchlicksProbability) {
     }
 }
 
+TEST(Schlick, SmallptsVariantTakesTheCosineOnTheOutside) {
+    // smallpt: c = 1 − (into ? cos θi : cos θt), θt the refracted direction's angle in the air.
+    const Hit hit = test_hit();
+    const Dielectric glass(1.5, Rgb(), Dielectric::Fresnel::SchlickOutside);
+    const double r0 = fresnel_r0(1, 1.5);
+    const Vec3 from_outside = direction_at(hit, 0.8, 0.4);
+    const auto a = glass.sample(hit, from_outside, {0, 0.5});
+    ASSERT_TRUE(a);
+    EXPECT_NEAR(a->pdf, schlick(0.8, r0), 1e-12);
+    const Vec3 from_inside = -direction_at(hit, 0.8, 0.4);
+    const double sin_t = 1.5 * std::sqrt(1 - 0.8 * 0.8);  // Snell into air
+    const double cos_t = std::sqrt(1 - sin_t * sin_t);
+    const auto b = glass.sample(hit, from_inside, {0, 0.5});
+    ASSERT_TRUE(b);
+    EXPECT_NEAR(b->pdf, schlick(cos_t, r0), 1e-12);
+    EXPECT_GT(std::abs(b->pdf - schlick(0.8, r0)), 1e-2);  // not RTIOW's rule
+}
+
 TEST(Schlick, TotalInternalReflectionAlwaysReflects) {
     const Hit hit = test_hit();
-    const Dielectric glass(1.5, Rgb(), true);
+    const Dielectric glass(1.5, Rgb(), Dielectric::Fresnel::Schlick);
     const Vec3 wo = -direction_at(hit, 0.3, 0.4);  // inside, beyond the critical angle (cos 0.745)
     for (const double ux : {0.0, 0.5, 1 - 0x1p-53}) {
         const auto s = glass.sample(hit, wo, {ux, 0.5});

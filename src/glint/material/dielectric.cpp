@@ -2,8 +2,9 @@
 //   ior         refractive index inside, > 0 (≠ 1 for a visible interface), default 1.5 (glass; water
 //               1.333, diamond 2.417); the outside is 1;
 //   absorption  σ per scene unit, colour ≥ 0, default 0: light travelling d inside keeps exp(−σ d);
-//   fresnel     exact (default) | schlick: the reflect/refract probability F is the exact dielectric
-//               Fresnel reflectance, or Schlick's approximation as Ray Tracing in One Weekend computes it.
+//   fresnel     exact (default) | schlick | schlick-outside: the reflect/refract probability F is the
+//               exact dielectric Fresnel reflectance, or Schlick's approximation as Ray Tracing in One
+//               Weekend computes it (schlick) or as smallpt does (schlick-outside).
 #include "glint/material/dielectric.hpp"
 
 #include "glint/material/fresnel.hpp"
@@ -24,7 +25,19 @@ std::optional<BsdfSample> Dielectric::sample(const Hit& hit, const Vec3& wo, Poi
     const std::optional<Vec3> refracted = refract(-wo, n, n1, n2);
     double reflectance = 1;  // total internal reflection
     if (refracted) {
-        reflectance = schlick_fresnel_ ? schlick(c1, fresnel_r0(n1, n2)) : fresnel_dielectric(c1, n1, n2);
+        switch (fresnel_) {
+            case Fresnel::Exact:
+                reflectance = fresnel_dielectric(c1, n1, n2);
+                break;
+            case Fresnel::Schlick:
+                reflectance = schlick(c1, fresnel_r0(n1, n2));
+                break;
+            case Fresnel::SchlickOutside: {
+                const double cos_outside = outside ? c1 : std::abs(dot(n, normalize(*refracted)));
+                reflectance = schlick(cos_outside, fresnel_r0(n1, n2));
+                break;
+            }
+        }
     }
     if (u.x < reflectance) {
         const Vec3 wi = 2 * c1 * n - wo;
@@ -45,8 +58,11 @@ std::unique_ptr<Material> Dielectric::create(Params& params, const BuildContext&
         params.fail("ior", "dielectric ior must be at most 10 (glass 1.5, water 1.333, diamond 2.417)");
     }
     const Rgb absorption = params.non_negative_color("absorption", Rgb());
-    const bool schlick_fresnel = params.choice("fresnel", {"exact", "schlick"}, "exact") == "schlick";
-    return std::make_unique<Dielectric>(ior, absorption, schlick_fresnel);
+    const std::string fresnel = params.choice("fresnel", {"exact", "schlick", "schlick-outside"}, "exact");
+    return std::make_unique<Dielectric>(ior, absorption,
+                                        fresnel == "schlick"           ? Fresnel::Schlick
+                                        : fresnel == "schlick-outside" ? Fresnel::SchlickOutside
+                                                                       : Fresnel::Exact);
 }
 
 }  // namespace glint
