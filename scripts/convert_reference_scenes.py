@@ -56,10 +56,13 @@ def convert_rtiow(data, defocus=True):
         "# its t_min = 0.001 (glint offsets ray origins by the hit's error bound) and its gamma-2 output.",
         "# Full quality (the book's settings):",
         f"#   glint render examples/rtiow-final.yaml --width {width} --height {height} --spp {cam['samples_per_pixel']}"
-        f" --max-depth {cam['max_depth']} -o rtiow-final.png",
+        f" --max-depth {cam['max_depth'] - 1} -o rtiow-final.png",
         "# Pixels: the book's independent uniform offsets in the pixel square (sampler random, box pixels).",
+        f"# Depth: the book's max_depth {cam['max_depth']} returns black for the ray after {cam['max_depth'] - 1} bounces;"
+        f" glint's max_depth counts",
+        f"# bounces (1 = direct light only), so the book's {cam['max_depth']} is glint's {cam['max_depth'] - 1}.",
         f"render: {{width: 200, height: 113, samples: 4, sampler: random, integrator: path,"
-        f" max_depth: {cam['max_depth']}}}",
+        f" max_depth: {cam['max_depth'] - 1}}}",
         f"camera: {{type: thin-lens, eye: {vec(cam['lookfrom'])}, look_at: {vec(cam['lookat'])}, up: {vec(cam['vup'])},"
         f" fov: {num(cam['vfov'])}, lens_radius: {num(lens_radius)}, focus_distance: {num(cam['focus_dist'])}}}"
         if defocus else
