@@ -29,8 +29,10 @@ def vec(v):
 # The reference materials as glint materials (docs/scene-format.md, "materials").
 MATERIALS = {
     "lambertian": lambda m: f"{{type: matte, albedo: {vec(m['albedo'])}}}",
-    "metal": lambda m: f"{{type: metal, albedo: {vec(m['albedo'])}, fuzz: {num(m['fuzz'])}}}",
-    "dielectric": lambda m: f"{{type: dielectric, ior: {num(m['ir'])}}}",
+    # The book's own lobes: its metal is glint's fuzzy-metal (mirror direction + fuzz × a random unit
+    # vector, no Fresnel), its dielectric chooses reflection with Schlick's approximation.
+    "metal": lambda m: f"{{type: fuzzy-metal, albedo: {vec(m['albedo'])}, fuzz: {num(m['fuzz'])}}}",
+    "dielectric": lambda m: f"{{type: dielectric, ior: {num(m['ir'])}, fresnel: schlick}}",
 }
 
 
@@ -46,15 +48,21 @@ def convert_rtiow(data, defocus=True):
         "# Camera: vfov 20°, thin lens of radius focus_dist · tan(defocus_angle / 2) focused at 10. Light: the",
         "# book's sky, white at the nadir to (0.5, 0.7, 1) at the zenith, lerped by 0.5 (dir.y + 1), as an",
         "# environment light (so it also lights the scene, as in the book). Materials: lambertian → matte,",
-        "# metal (fuzz) → metal with `fuzz` (glint's metal is GGX with fuzz as its roughness, where the book",
-        "# jitters the mirror direction by fuzz × a random point in the unit ball: same look, not the same",
-        "# lobe), dielectric → dielectric (the book uses Schlick's Fresnel approximation, glint the exact one).",
-        "# The book's integrator is a path tracer without light sampling; glint's path tracer with next-event",
-        "# estimation and MIS converges to the same image.",
+        "# metal (albedo, fuzz) → fuzzy-metal (the book's lobe: the mirror direction plus fuzz × a random",
+        "# unit vector, absorbed below the surface), dielectric → dielectric with `fresnel: schlick` (the",
+        "# book's reflect/refract choice). The book's integrator is a path tracer without light sampling;",
+        "# glint's path tracer adds next-event estimation with MIS at the matte spheres, which converges to",
+        "# the same image (fuzzy-metal and glass are sampled like the book, as delta lobes). Not the book's:",
+        "# its t_min = 0.001 (glint offsets ray origins by the hit's error bound) and its gamma-2 output.",
         "# Full quality (the book's settings):",
         f"#   glint render examples/rtiow-final.yaml --width {width} --height {height} --spp {cam['samples_per_pixel']}"
-        f" --max-depth {cam['max_depth']} -o rtiow-final.png",
-        f"render: {{width: 200, height: 113, samples: 4, integrator: path, max_depth: {cam['max_depth']}}}",
+        f" --max-depth {cam['max_depth'] - 1} -o rtiow-final.png",
+        "# Pixels: the book's independent uniform offsets in the pixel square (sampler random, box pixels).",
+        f"# Depth: the book's max_depth {cam['max_depth']} returns black for the ray after {cam['max_depth'] - 1} bounces;"
+        f" glint's max_depth counts",
+        f"# bounces (1 = direct light only), so the book's {cam['max_depth']} is glint's {cam['max_depth'] - 1}.",
+        f"render: {{width: 200, height: 113, samples: 4, sampler: random, integrator: path,"
+        f" max_depth: {cam['max_depth'] - 1}}}",
         f"camera: {{type: thin-lens, eye: {vec(cam['lookfrom'])}, look_at: {vec(cam['lookat'])}, up: {vec(cam['vup'])},"
         f" fov: {num(cam['vfov'])}, lens_radius: {num(lens_radius)}, focus_distance: {num(cam['focus_dist'])}}}"
         if defocus else
@@ -87,11 +95,15 @@ def convert_smallpt(data):
         "# plane, so Frnt is left out. That changes no radiance: Frnt is black (albedo 0, no emission), and",
         "# a ray leaving through its place sees the black background instead.",
         f"# fov = 2 atan(0.5135 / 2 / |cam.d|) = {fov:.4f}°; pixels are square (cx = w · .5135 / h).",
-        "# Materials: DIFF → matte, SPEC → mirror, REFR → dielectric of index 1.5 (smallpt uses Schlick's",
-        "# approximation and its own reflect/refract probabilities; both estimate the same light), and the",
-        "# light 'Lite' (emission 12, colour 0) → an area light on its sphere, which the ceiling mostly covers.",
-        "# Not reproduced: smallpt's 2×2 sub-pixels with a tent filter and per-sub-pixel clamping to [0, 1],",
-        "# and the 0.999 colour of its glass (glint's dielectric is clear: 0.1 % more light per crossing).",
+        "# Materials: DIFF → matte, SPEC → mirror, REFR → dielectric of index 1.5 with `fresnel:",
+        "# schlick-outside` (smallpt's Schlick reflectance, its cosine taken in the air; smallpt traces both",
+        "# lobes up to depth 2 and then picks one with P = .25 + .5 Re, weighted Re/P or Tr/(1 − P): the same",
+        "# expectation as glint's choice with probability Re), and the light 'Lite' (emission 12, colour 0)",
+        "# → an area light on its sphere, which the ceiling mostly covers.",
+        "# Not reproduced: smallpt's 2×2 sub-pixels with a tent filter and per-sub-pixel clamping to [0, 1]",
+        "# (a clamp of a noisy mean: its expected value depends on the sample count, so no unbiased renderer",
+        "# converges to it), the 0.999 colour of its glass (glint's dielectric is clear: 0.1 % more light",
+        "# per crossing), and its unbounded depth (glint stops at max_depth 50, after Russian roulette).",
         "# Full quality (smallpt's size; `./smallpt 64` takes 64 spp):",
         f"#   glint render examples/smallpt.yaml --width {width} --height {height} --spp 64 -o smallpt.png",
         "render: {width: 256, height: 192, samples: 4, integrator: path, max_depth: 50}",
@@ -116,7 +128,7 @@ def convert_smallpt(data):
         elif kind == "REFR":
             # smallpt multiplies light through glass by its colour (0.999) at each hit; glint's
             # dielectric is clear (said in the header).
-            material = f"{{type: dielectric, ior: {num(s['ior'])}}}"
+            material = f"{{type: dielectric, ior: {num(s['ior'])}, fresnel: schlick-outside}}"
         else:
             raise ValueError(f"unknown smallpt material {kind}")
         out.append(f"  - {{type: sphere, center: {vec(s['center'])}, radius: {num(s['radius'])},"

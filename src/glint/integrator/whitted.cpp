@@ -45,7 +45,8 @@ Rgb WhittedIntegrator::trace(const Scene& scene, const Ray& ray, int depth, doub
             radiance +=
                 lobe_weight * trace(scene, spawn_ray(hit, s.wi), depth + 1, branch_weight, samples, rays);
         };
-        const bool two_lobes = first && second && first->delta && second->delta && first->wi != second->wi;
+        const bool two_lobes = !material.random_delta_direction() && first && second && first->delta &&
+                               second->delta && first->wi != second->wi;
         if (two_lobes) {
             follow(*first, first->f * std::abs(dot(hit.shading_normal, first->wi)));
             follow(*second, second->f * std::abs(dot(hit.shading_normal, second->wi)));

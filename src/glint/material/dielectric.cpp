@@ -1,7 +1,10 @@
-// Dielectric {type: dielectric, ior, absorption}:
+// Dielectric {type: dielectric, ior, absorption, fresnel}:
 //   ior         refractive index inside, > 0 (≠ 1 for a visible interface), default 1.5 (glass; water
 //               1.333, diamond 2.417); the outside is 1;
-//   absorption  σ per scene unit, colour ≥ 0, default 0: light travelling d inside keeps exp(−σ d).
+//   absorption  σ per scene unit, colour ≥ 0, default 0: light travelling d inside keeps exp(−σ d);
+//   fresnel     exact (default) | schlick | schlick-outside: the reflect/refract probability F is the
+//               exact dielectric Fresnel reflectance, or Schlick's approximation as Ray Tracing in One
+//               Weekend computes it (schlick) or as smallpt does (schlick-outside).
 #include "glint/material/dielectric.hpp"
 
 #include "glint/material/fresnel.hpp"
@@ -19,9 +22,24 @@ std::optional<BsdfSample> Dielectric::sample(const Hit& hit, const Vec3& wo, Poi
     const double n2 = outside ? ior_ : 1.0;  // index on the other side
     const Vec3 n = outside ? hit.shading_normal : -hit.shading_normal;
     const double c1 = std::abs(cos_o);
-    const double reflectance = fresnel_dielectric(c1, n1, n2);
     const std::optional<Vec3> refracted = refract(-wo, n, n1, n2);
-    if (u.x < reflectance || !refracted) {
+    double reflectance = 1;  // total internal reflection
+    if (refracted) {
+        switch (fresnel_) {
+            case Fresnel::Exact:
+                reflectance = fresnel_dielectric(c1, n1, n2);
+                break;
+            case Fresnel::Schlick:
+                reflectance = schlick(c1, fresnel_r0(n1, n2));
+                break;
+            case Fresnel::SchlickOutside: {
+                const double cos_outside = outside ? c1 : std::abs(dot(n, normalize(*refracted)));
+                reflectance = schlick(cos_outside, fresnel_r0(n1, n2));
+                break;
+            }
+        }
+    }
+    if (u.x < reflectance) {
         const Vec3 wi = 2 * c1 * n - wo;
         return BsdfSample{wi, Rgb(reflectance / c1), reflectance, true};
     }
@@ -39,7 +57,12 @@ std::unique_ptr<Material> Dielectric::create(Params& params, const BuildContext&
     if (ior > 10) {
         params.fail("ior", "dielectric ior must be at most 10 (glass 1.5, water 1.333, diamond 2.417)");
     }
-    return std::make_unique<Dielectric>(ior, params.non_negative_color("absorption", Rgb()));
+    const Rgb absorption = params.non_negative_color("absorption", Rgb());
+    const std::string fresnel = params.choice("fresnel", {"exact", "schlick", "schlick-outside"}, "exact");
+    return std::make_unique<Dielectric>(ior, absorption,
+                                        fresnel == "schlick"           ? Fresnel::Schlick
+                                        : fresnel == "schlick-outside" ? Fresnel::SchlickOutside
+                                                                       : Fresnel::Exact);
 }
 
 }  // namespace glint

@@ -15,10 +15,18 @@ namespace glint {
 // glint transports radiance, and radiance changes across an interface: L is proportional to n² for
 // the same flux, so a camera path crossing from index n₁ into n₂ carries (n₁/n₂)². The factors
 // cancel on a path that enters and leaves the same medium.
+// `fresnel` may replace F by Schlick's approximation R₀ + (1 − R₀)(1 − cos θ)⁵, R₀ = ((n₁ − n₂)/(n₁ + n₂))²:
+//   Schlick:        θ the angle of wo on its own side, also from inside the glass (Ray Tracing in One
+//                   Weekend's dielectric);
+//   SchlickOutside: θ the angle on the outside (index 1): wo's from outside, the refracted direction's
+//                   from inside (smallpt's glass).
+// Either way the ray reflects whenever Snell's law has no refraction.
 // Inside, light is absorbed by Beer's law with coefficient `absorption` σ (see Material::absorption).
 class Dielectric final : public Material {
   public:
-    Dielectric(double ior, const Rgb& absorption) : ior_(ior), absorption_(absorption) {}
+    enum class Fresnel { Exact, Schlick, SchlickOutside };
+    Dielectric(double ior, const Rgb& absorption, Fresnel fresnel = Fresnel::Exact)
+        : ior_(ior), absorption_(absorption), fresnel_(fresnel) {}
     Rgb evaluate(const Hit&, const Vec3&, const Vec3&) const override { return {}; }
     std::optional<BsdfSample> sample(const Hit& hit, const Vec3& wo, Point2 u) const override;
     double pdf(const Hit&, const Vec3&, const Vec3&) const override { return 0; }
@@ -29,6 +37,7 @@ class Dielectric final : public Material {
   private:
     double ior_;
     Rgb absorption_;
+    Fresnel fresnel_;
 };
 
 }  // namespace glint

@@ -54,6 +54,11 @@ class Material {
     // inside (dot(ray direction, hit.normal) > 0), it travelled d = hit.t · ‖ray direction‖ through that
     // surface's material. Zero (no absorption) for every material but dielectric.
     virtual Rgb absorption() const { return {}; }
+
+    // True if sample() returns delta-flagged samples whose direction is random within the lobe (Ray
+    // Tracing in One Weekend's fuzzy metal: no density to evaluate, so integrators treat it as a delta
+    // lobe). Whitted must then follow one random sample instead of splitting into each delta lobe.
+    virtual bool random_delta_direction() const { return false; }
 };
 
 // Beer–Lambert transmittance exp(−σ d) per channel after a distance d through a medium of absorption σ.

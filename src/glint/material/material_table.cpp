@@ -1,6 +1,7 @@
 // The one name → constructor table of materials. Adding a material: a file here and a line below.
 #include "glint/material/dielectric.hpp"
 #include "glint/material/emissive.hpp"
+#include "glint/material/fuzzy_metal.hpp"
 #include "glint/material/matte.hpp"
 #include "glint/material/metal.hpp"
 #include "glint/material/mirror.hpp"
@@ -11,9 +12,15 @@ namespace glint {
 
 const std::vector<MaterialEntry>& material_table() {
     static const std::vector<MaterialEntry> table = {
-        {"matte", &Matte::create},           {"phong", &Phong::create},       {"plastic", &Plastic::create},
-        {"mirror", &Mirror::create},         {"metal", &Metal::create},       {"glossy", &Metal::create},
-        {"dielectric", &Dielectric::create}, {"emissive", &Emissive::create},
+        {"matte", &Matte::create},
+        {"phong", &Phong::create},
+        {"plastic", &Plastic::create},
+        {"mirror", &Mirror::create},
+        {"metal", &Metal::create},
+        {"glossy", &Metal::create},
+        {"dielectric", &Dielectric::create},
+        {"emissive", &Emissive::create},
+        {"fuzzy-metal", &FuzzyMetal::create},
     };
     return table;
 }

@@ -1,0 +1,42 @@
+// Fuzzy metal {type: fuzzy-metal, albedo, fuzz} (Ray Tracing in One Weekend's `metal`):
+//   albedo  colour or texture in [0, 1], default 0.9: the fraction of light reflected;
+//   fuzz    in [0, 1], default 0: the radius of the sphere the mirror direction is perturbed by (0 is a
+//           perfect mirror of reflectance albedo).
+#include "glint/material/fuzzy_metal.hpp"
+
+#include "glint/material/mirror.hpp"
+#include "glint/scene/params.hpp"
+
+namespace glint {
+
+std::optional<BsdfSample> FuzzyMetal::sample(const Hit& hit, const Vec3& wo, Point2 u) const {
+    const Vec3 n = face_forward(hit.shading_normal, wo);  // the book's front-face normal
+    if (dot(n, wo) <= 0) {
+        return std::nullopt;
+    }
+    Vec3 scattered = mirror_direction(hit, wo);
+    if (fuzz_ > 0) {
+        // A uniform point on the unit sphere (the book's random_unit_vector): z uniform in [−1, 1].
+        const double z = 1 - 2 * u.x;
+        const double r = safe_sqrt(1 - z * z);
+        const double phi = 2 * kPi * u.y;
+        scattered = normalize(scattered + fuzz_ * Vec3{r * std::cos(phi), r * std::sin(phi), z});
+    }
+    const double cos_i = dot(n, scattered);
+    if (!(cos_i > 0)) {
+        return std::nullopt;  // perturbed below the surface: absorbed, as in the book
+    }
+    return BsdfSample{scattered, albedo_->evaluate(hit) / std::abs(dot(hit.shading_normal, scattered)), 1.0,
+                      true};
+}
+
+std::unique_ptr<Material> FuzzyMetal::create(Params& params, const BuildContext& context) {
+    auto albedo = read_reflectance(params, "albedo", Rgb(0.9), context);
+    const double fuzz = params.number("fuzz", 0.0);
+    if (!(fuzz >= 0 && fuzz <= 1)) {
+        params.fail("fuzz", "fuzzy-metal fuzz must lie in [0, 1] (the book clamps it to 1)");
+    }
+    return std::make_unique<FuzzyMetal>(std::move(albedo), fuzz);
+}
+
+}  // namespace glint

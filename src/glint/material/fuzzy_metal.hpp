@@ -1,0 +1,38 @@
+#pragma once
+
+#include <memory>
+
+#include "glint/material/material.hpp"
+#include "glint/texture/texture.hpp"
+
+namespace glint {
+
+// Ray Tracing in One Weekend's metal (book 1, v4 `metal::scatter`): the mirror direction R of the
+// incoming ray, perturbed by `fuzz` times a uniformly random point on the unit sphere,
+//   scattered = R + fuzz · s,   |s| = 1,
+// absorbed (sample() returns nullopt) when dot(scattered, N) ≤ 0 with N the normal facing the ray;
+// otherwise the path is attenuated by `albedo` (no Fresnel term). With |R| = 1 and |fuzz · s| ≤ fuzz
+// the scattered direction lies within the cone of half-angle asin(fuzz) about R.
+//
+// This lobe has no density that is easy to evaluate, so it is sampled as if it were a delta lobe:
+// evaluate() and pdf() return 0 and sample() returns f = albedo / |cos θi|, pdf 1, delta = true (path
+// weight albedo). Integrators therefore never light-sample it nor weight it by MIS; light reaches it only
+// through sample(). That is exactly the book's estimator, whose only light is the sky that escaping
+// BSDF-sampled rays see; under small lights it would converge (to the same image) but slowly.
+class FuzzyMetal final : public Material {
+  public:
+    FuzzyMetal(std::shared_ptr<const Texture> albedo, double fuzz)
+        : albedo_(std::move(albedo)), fuzz_(fuzz) {}
+    Rgb evaluate(const Hit&, const Vec3&, const Vec3&) const override { return {}; }
+    std::optional<BsdfSample> sample(const Hit& hit, const Vec3& wo, Point2 u) const override;
+    double pdf(const Hit&, const Vec3&, const Vec3&) const override { return 0; }
+    bool random_delta_direction() const override { return fuzz_ > 0; }
+
+    static std::unique_ptr<Material> create(Params& params, const BuildContext& context);
+
+  private:
+    std::shared_ptr<const Texture> albedo_;
+    double fuzz_;
+};
+
+}  // namespace glint
