@@ -1,13 +1,19 @@
 #include "glint/accel/wide_bvh.hpp"
 
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_reduce.h>
 #include <tbb/task_group.h>
 
+#if defined(__SSE2__)
+#include <immintrin.h>
+#endif
+
 #include <array>
+#include <bit>
 #include <deque>
+#include <memory>
 #include <mutex>
-#include <numeric>
 
 namespace glint {
 namespace {
@@ -16,35 +22,14 @@ constexpr int kBins = 16;
 // Beyond this binary depth, splits are median splits by count, which halve the range: the depth (and
 // so the traversal stack) stays bounded whatever the input.
 constexpr int kMedianSplitDepth = 48;
-// Ranges smaller than this are built by the current task; larger ones spawn tasks.
-constexpr std::size_t kParallelGrain = 4096;
+// Ranges of at least this many primitives are built by their own task.
+constexpr std::size_t kTaskGrain = 4096;
+// Ranges of at least this many primitives are binned and partitioned by several threads, in chunks of
+// kChunk. The chunks depend only on the range, never on the thread count, so the tree does not either.
+constexpr std::size_t kParallelSplit = 1 << 18;
+constexpr std::size_t kChunk = 1 << 13;
 
-double half_area(const Bounds3& b) {
-    if (b.empty()) {
-        return 0;
-    }
-    const Vec3 e = b.extent();
-    return e.x * e.y + e.y * e.z + e.z * e.x;
-}
-
-// A range of primitive positions [begin, end) with its boxes.
-struct Range {
-    std::size_t begin = 0, end = 0;
-    Bounds3 bounds;           // of the primitives
-    Bounds3 centroid_bounds;  // of their centroids
-    int depth = 0;            // binary splits above it
-    bool is_leaf = false;     // decided: not worth splitting (or cannot be)
-    std::size_t size() const { return end - begin; }
-};
-
-struct Bin {
-    Bounds3 bounds;
-    std::size_t count = 0;
-};
-using Bins = std::array<std::array<Bin, kBins>, 3>;
-
-// float boxes that contain the double ones: rounded outwards, then padded by a relative 2^-20 so that
-// the float slab arithmetic of traversal never culls a box the ray touches.
+// float boxes that contain the double ones: rounded outwards.
 float round_down(double v) {
     float f = saturate_to_float(v);
     if (static_cast<double>(f) > v) {
@@ -60,47 +45,283 @@ float round_up(double v) {
     return f;
 }
 
+// Four floats operated on together: SSE on x86-64 (always present there), a plain loop elsewhere. The
+// build's boxes are kept in these, lanes x, y, z and one unused, so that growing a box is two
+// instructions instead of six compare-and-branch pairs.
+#if defined(__SSE2__)
+using F4 = __m128;
+inline F4 load4(const float* p) {
+    return _mm_load_ps(p);
+}
+inline F4 splat4(float v) {
+    return _mm_set1_ps(v);
+}
+inline F4 add4(F4 a, F4 b) {
+    return _mm_add_ps(a, b);
+}
+inline F4 sub4(F4 a, F4 b) {
+    return _mm_sub_ps(a, b);
+}
+inline F4 mul4(F4 a, F4 b) {
+    return _mm_mul_ps(a, b);
+}
+// The second operand is returned when either is NaN: min4(x, acc) keeps acc for a NaN x.
+inline F4 min4(F4 x, F4 acc) {
+    return _mm_min_ps(x, acc);
+}
+inline F4 max4(F4 x, F4 acc) {
+    return _mm_max_ps(x, acc);
+}
+inline void store4(float* p, F4 v) {
+    _mm_store_ps(p, v);
+}
+#else
+struct F4 {
+    float v[4];
+};
+inline F4 load4(const float* p) {
+    return {{p[0], p[1], p[2], p[3]}};
+}
+inline F4 splat4(float v) {
+    return {{v, v, v, v}};
+}
+template <class Op>
+inline F4 map4(F4 a, F4 b, Op op) {
+    return {{op(a.v[0], b.v[0]), op(a.v[1], b.v[1]), op(a.v[2], b.v[2]), op(a.v[3], b.v[3])}};
+}
+inline F4 add4(F4 a, F4 b) {
+    return map4(a, b, [](float x, float y) { return x + y; });
+}
+inline F4 sub4(F4 a, F4 b) {
+    return map4(a, b, [](float x, float y) { return x - y; });
+}
+inline F4 mul4(F4 a, F4 b) {
+    return map4(a, b, [](float x, float y) { return x * y; });
+}
+inline F4 min4(F4 x, F4 acc) {
+    return map4(x, acc, [](float a, float b) { return a < b ? a : b; });
+}
+inline F4 max4(F4 x, F4 acc) {
+    return map4(x, acc, [](float a, float b) { return a > b ? a : b; });
+}
+inline void store4(float* p, F4 v) {
+    std::copy(v.v, v.v + 4, p);
+}
+#endif
+
+// A primitive as the build sees it: its box in float (rounded outwards) and its index, 32 bytes. The
+// build moves these rather than indices into the caller's boxes, so that every pass reads memory in
+// order instead of jumping through an index array into 48-byte double boxes. The index rides in the
+// unused fourth lane of `lo`, as bits (copies of a float keep its bits, and the lane is never computed
+// with).
+struct alignas(16) PrimRef {
+    float lo[4];
+    float hi[4];
+    std::uint32_t id() const { return std::bit_cast<std::uint32_t>(lo[3]); }
+    F4 lo4() const { return load4(lo); }
+    F4 hi4() const { return load4(hi); }
+    // Twice the box centre: the factor 2 is the same everywhere, so it never needs undoing.
+    F4 centroid2() const { return add4(lo4(), hi4()); }
+    float centroid2(int axis) const { return lo[axis] + hi[axis]; }
+};
+
+// A float box, empty by default (lo > hi). Lane 3 is not part of it.
+struct Box {
+    F4 lo = splat4(std::numeric_limits<float>::infinity());
+    F4 hi = splat4(-std::numeric_limits<float>::infinity());
+
+    void grow(const Box& b) {
+        lo = min4(b.lo, lo);
+        hi = max4(b.hi, hi);
+    }
+    void grow(const PrimRef& p) {
+        lo = min4(p.lo4(), lo);
+        hi = max4(p.hi4(), hi);
+    }
+    void grow_point(F4 p) {
+        lo = min4(p, lo);
+        hi = max4(p, hi);
+    }
+    struct Corners {
+        alignas(16) float lo[4];
+        alignas(16) float hi[4];
+    };
+    Corners corners() const {
+        Corners c;
+        store4(c.lo, lo);
+        store4(c.hi, hi);
+        return c;
+    }
+    // Half the surface area, in double: the SAH compares sums of these. 0 for an empty box.
+    double half_area() const {
+        const Corners c = corners();
+        if (!(c.lo[0] <= c.hi[0] && c.lo[1] <= c.hi[1] && c.lo[2] <= c.hi[2])) {
+            return 0;
+        }
+        const double x = double{c.hi[0]} - c.lo[0], y = double{c.hi[1]} - c.lo[1],
+                     z = double{c.hi[2]} - c.lo[2];
+        return x * y + y * z + z * x;
+    }
+};
+
+// A range of primitive positions [begin, end) with its boxes.
+struct Range {
+    std::size_t begin = 0, end = 0;
+    Box bounds;            // of the primitives
+    Box centroid_bounds;   // of their (doubled) centroids
+    int depth = 0;         // binary splits above it
+    bool is_leaf = false;  // decided: not worth splitting (or cannot be)
+    std::size_t size() const { return end - begin; }
+};
+
+// The sides of a split and their boxes, as one pass of partitioning measures them.
+struct Sides {
+    Box left, left_centroids, right, right_centroids;
+    std::size_t left_count = 0;
+    void add(const PrimRef& p, bool left_side) {
+        if (left_side) {
+            left.grow(p);
+            left_centroids.grow_point(p.centroid2());
+            ++left_count;
+        } else {
+            right.grow(p);
+            right_centroids.grow_point(p.centroid2());
+        }
+    }
+    void merge(const Sides& o) {
+        left.grow(o.left);
+        left_centroids.grow(o.left_centroids);
+        right.grow(o.right);
+        right_centroids.grow(o.right_centroids);
+        left_count += o.left_count;
+    }
+};
+
+struct Bin {
+    Box bounds;
+    std::size_t count = 0;
+};
+using Bins = std::array<std::array<Bin, kBins>, 3>;
+
+// Which bin a centroid falls in, per axis, over the centroid bounds (the same function for binning and
+// for partitioning, so that both agree).
+struct Binning {
+    alignas(16) float lo[4] = {0, 0, 0, 0};
+    alignas(16) float scale[4] = {0, 0, 0, 0};  // bins per unit length; 0 on an axis that cannot be split
+    explicit Binning(const Box& centroid_bounds) {
+        const Box::Corners cb = centroid_bounds.corners();
+        for (int axis = 0; axis < 3; ++axis) {
+            lo[axis] = cb.lo[axis];
+            const float extent = cb.hi[axis] - cb.lo[axis];
+            // Slightly fewer than kBins per extent, so that the largest centroid still lands in the last bin.
+            const float bins_per_unit = kBins * (1 - 1e-6f) / extent;
+            scale[axis] = extent > 0 && std::isfinite(bins_per_unit) && bins_per_unit > 0 ? bins_per_unit : 0;
+        }
+    }
+    bool can_split() const { return scale[0] > 0 || scale[1] > 0 || scale[2] > 0; }
+    // The bins of `p` on the three axes (lane 3 is meaningless). max4(·, 0) turns NaN into 0 and the min
+    // keeps the value in range, so the conversion to int is always defined.
+    void bins(const PrimRef& p, int* out) const {
+        F4 f = mul4(sub4(p.centroid2(), load4(lo)), load4(scale));
+        f = min4(max4(f, splat4(0)), splat4(kBins - 1));
+        alignas(16) float v[4];
+        store4(v, f);
+        for (int axis = 0; axis < 3; ++axis) {
+            out[axis] = static_cast<int>(v[axis]);
+        }
+    }
+    int bin(const PrimRef& p, int axis) const {
+        const float f = (p.centroid2(axis) - lo[axis]) * scale[axis];
+        const float at_least_zero = f > 0 ? f : 0;  // NaN → 0
+        return static_cast<int>(at_least_zero < kBins - 1 ? at_least_zero : kBins - 1);
+    }
+};
+
 class Builder {
   public:
-    Builder(std::span<const Bounds3> boxes, const BvhBuildOptions& options, std::vector<std::uint32_t>& order)
-        : boxes_(boxes), options_(options), order_(order) {}
+    // Reads the boxes in parallel, and returns their union through `bounds`.
+    Builder(std::size_t count, const std::function<Bounds3(std::size_t)>& box_of,
+            const BvhBuildOptions& options, Bounds3& bounds)
+        : options_(options), count_(count), refs_(new PrimRef[count]) {
+        bounds = tbb::parallel_reduce(
+            tbb::blocked_range<std::size_t>(0, count_, kChunk), Bounds3{},
+            [&](const tbb::blocked_range<std::size_t>& r, Bounds3 acc) {
+                for (std::size_t i = r.begin(); i < r.end(); ++i) {
+                    const Bounds3 b = box_of(i);
+                    acc.grow(b);
+                    refs_[i] = PrimRef{{round_down(b.lo.x), round_down(b.lo.y), round_down(b.lo.z),
+                                        std::bit_cast<float>(static_cast<std::uint32_t>(i))},
+                                       {round_up(b.hi.x), round_up(b.hi.y), round_up(b.hi.z), 0}};
+                }
+                return acc;
+            },
+            [](Bounds3 a, const Bounds3& b) {
+                a.grow(b);  // min and max are exact: the order of the pieces does not matter
+                return a;
+            });
+    }
 
-    std::vector<WideBvhNode> build() {
-        Range root{0, boxes_.size(), {}, {}, 0, false};
+    // Builds the tree; returns its nodes, and the primitive order through `order`.
+    std::vector<WideBvhNode> build(std::vector<std::uint32_t>& order) {
+        Range root{0, count_, {}, {}, 0, false};
         measure(root);
         nodes_.emplace_back();
         build_node(0, root);
+        // Tasks allocate nodes in whatever order they run; renumbering them depth-first makes the layout
+        // the same for any thread count, and puts each subtree's nodes together in memory.
         std::vector<WideBvhNode> nodes;
         nodes.reserve(nodes_.size());
-        for (const auto& n : nodes_) {
-            nodes.push_back(n);
+        std::vector<std::pair<std::uint32_t, std::size_t>> pending{{0u, 0}};  // (built index, parent slot)
+        while (!pending.empty()) {
+            const auto [built, parent_slot] = pending.back();
+            pending.pop_back();
+            const auto index = static_cast<std::uint32_t>(nodes.size());
+            if (!nodes.empty()) {
+                nodes[parent_slot / WideBvhNode::kWidth].child[parent_slot % WideBvhNode::kWidth] = index;
+            }
+            nodes.push_back(nodes_[built]);
+            for (int c = WideBvhNode::kWidth - 1; c >= 0; --c) {
+                // An empty slot is child 0, count 0: the root is nobody's child.
+                if (nodes.back().count[c] == 0 && nodes.back().child[c] != 0) {
+                    pending.emplace_back(nodes.back().child[c], std::size_t{index} * WideBvhNode::kWidth + c);
+                }
+            }
         }
+        order.resize(count_);
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count_, kChunk), [&](const auto& r) {
+            for (std::size_t i = r.begin(); i < r.end(); ++i) {
+                order[i] = refs_[i].id();
+            }
+        });
         return nodes;
-    }
-    Bounds3 root_bounds() const {
-        Range root{0, boxes_.size(), {}, {}, 0, false};
-        measure(root);
-        return root.bounds;
     }
 
   private:
+    // The chunks of a large range; each is processed whole by one thread, and results are combined in
+    // chunk order.
+    static std::size_t chunk_count(const Range& range) { return (range.size() + kChunk - 1) / kChunk; }
+    static std::size_t chunk_begin(const Range& range, std::size_t c) { return range.begin + c * kChunk; }
+    static std::size_t chunk_end(const Range& range, std::size_t c) {
+        return std::min(range.end, chunk_begin(range, c + 1));
+    }
+
     void measure(Range& range) const {
-        auto reduce = [&](std::size_t b, std::size_t e, std::pair<Bounds3, Bounds3> acc) {
+        auto reduce = [&](std::size_t b, std::size_t e, std::pair<Box, Box> acc) {
             for (std::size_t i = b; i < e; ++i) {
-                acc.first.grow(boxes_[order_[i]]);
-                acc.second.grow(boxes_[order_[i]].center());
+                acc.first.grow(refs_[i]);
+                acc.second.grow_point(refs_[i].centroid2());
             }
             return acc;
         };
-        std::pair<Bounds3, Bounds3> result;
-        if (range.size() > kParallelGrain * 4) {
+        std::pair<Box, Box> result;
+        if (range.size() >= kParallelSplit) {
+            // min and max are exact, so the order the pieces are combined in does not matter.
             result = tbb::parallel_reduce(
-                tbb::blocked_range<std::size_t>(range.begin, range.end, kParallelGrain),
-                std::pair<Bounds3, Bounds3>{},
-                [&](const tbb::blocked_range<std::size_t>& r, std::pair<Bounds3, Bounds3> acc) {
+                tbb::blocked_range<std::size_t>(range.begin, range.end, kChunk), std::pair<Box, Box>{},
+                [&](const tbb::blocked_range<std::size_t>& r, std::pair<Box, Box> acc) {
                     return reduce(r.begin(), r.end(), acc);
                 },
-                [](std::pair<Bounds3, Bounds3> a, const std::pair<Bounds3, Bounds3>& b) {
+                [](std::pair<Box, Box> a, const std::pair<Box, Box>& b) {
                     a.first.grow(b.first);
                     a.second.grow(b.second);
                     return a;
@@ -112,58 +333,107 @@ class Builder {
         range.centroid_bounds = result.second;
     }
 
-    // Which bin a centroid falls in, per axis, over the centroid bounds (the same function for binning
-    // and for partitioning, so that both agree). Centroids are box centres, recomputed rather than
-    // stored: a pass over the boxes is cheaper than allocating another array of them.
-    struct Binning {
-        Vec3 lo;
-        double scale[3] = {0, 0, 0};  // bins per unit length; 0 on an axis with no extent
-        explicit Binning(const Bounds3& cb) : lo(cb.lo) {
+    void fill_bins(std::size_t begin, std::size_t end, const Binning& binning, Bins& bins) const {
+        for (std::size_t i = begin; i < end; ++i) {
+            const PrimRef& p = refs_[i];
+            int bin[3];
+            binning.bins(p, bin);
             for (int axis = 0; axis < 3; ++axis) {
-                const double extent = cb.hi[axis] - cb.lo[axis];
-                const double bins_per_unit = kBins / extent;
-                scale[axis] = extent > 0 && std::isfinite(bins_per_unit) ? bins_per_unit : 0;
+                bins[axis][bin[axis]].bounds.grow(p);
+                ++bins[axis][bin[axis]].count;
             }
         }
-        int bin(const Vec3& centroid, int axis) const {
-            const int b = static_cast<int>((centroid[axis] - lo[axis]) * scale[axis]);
-            return std::clamp(b, 0, kBins - 1);
-        }
-    };
+    }
 
-    Bins fill_bins(const Range& range) const {
-        const Binning binning(range.centroid_bounds);
-        auto fill = [&](std::size_t b, std::size_t e, Bins bins) {
-            for (std::size_t i = b; i < e; ++i) {
-                const std::uint32_t p = order_[i];
-                const Vec3 centroid = boxes_[p].center();
+    void fill_bins(const Range& range, const Binning& binning, Bins& bins) const {
+        if (range.size() < kParallelSplit) {
+            fill_bins(range.begin, range.end, binning, bins);
+            return;
+        }
+        bins = tbb::parallel_reduce(
+            tbb::blocked_range<std::size_t>(range.begin, range.end, kChunk), Bins{},
+            [&](const tbb::blocked_range<std::size_t>& r, Bins acc) {
+                fill_bins(r.begin(), r.end(), binning, acc);
+                return acc;
+            },
+            [](Bins a, const Bins& b) {
                 for (int axis = 0; axis < 3; ++axis) {
-                    if (binning.scale[axis] > 0) {
-                        Bin& bin = bins[axis][binning.bin(centroid, axis)];
-                        bin.bounds.grow(boxes_[p]);
-                        ++bin.count;
+                    for (int i = 0; i < kBins; ++i) {
+                        a[axis][i].bounds.grow(b[axis][i].bounds);
+                        a[axis][i].count += b[axis][i].count;
                     }
                 }
-            }
-            return bins;
-        };
-        if (range.size() > kParallelGrain * 4) {
-            return tbb::parallel_reduce(
-                tbb::blocked_range<std::size_t>(range.begin, range.end, kParallelGrain), Bins{},
-                [&](const tbb::blocked_range<std::size_t>& r, Bins acc) {
-                    return fill(r.begin(), r.end(), acc);
-                },
-                [](Bins a, const Bins& b) {
-                    for (int axis = 0; axis < 3; ++axis) {
-                        for (int i = 0; i < kBins; ++i) {
-                            a[axis][i].bounds.grow(b[axis][i].bounds);
-                            a[axis][i].count += b[axis][i].count;
-                        }
-                    }
-                    return a;
-                });
+                return a;
+            });
+    }
+
+    // Moves the primitives `goes_left` picks to the front of the range, measuring both sides as it goes.
+    // Returns the sides; the left one is [begin, begin + left_count).
+    template <class GoesLeft>
+    Sides partition(const Range& range, GoesLeft goes_left) {
+        if (range.size() < kParallelSplit) {
+            return partition_serial(range.begin, range.end, goes_left);
         }
-        return fill(range.begin, range.end, Bins{});
+        // Large ranges: each chunk counts and measures its sides, then every chunk copies its
+        // primitives to their place in the scratch array (a stable partition), which is copied back.
+        const std::size_t chunks = chunk_count(range);
+        std::vector<Sides> sides(chunks);
+        tbb::parallel_for(std::size_t{0}, chunks, [&](std::size_t c) {
+            for (std::size_t i = chunk_begin(range, c); i < chunk_end(range, c); ++i) {
+                sides[c].add(refs_[i], goes_left(refs_[i]));
+            }
+        });
+        std::vector<std::size_t> left_at(chunks), right_at(chunks);
+        Sides total;
+        for (std::size_t c = 0; c < chunks; ++c) {
+            total.merge(sides[c]);
+        }
+        std::size_t left = range.begin, right = range.begin + total.left_count;
+        for (std::size_t c = 0; c < chunks; ++c) {
+            left_at[c] = left;
+            right_at[c] = right;
+            left += sides[c].left_count;
+            right += chunk_end(range, c) - chunk_begin(range, c) - sides[c].left_count;
+        }
+        scratch();
+        tbb::parallel_for(std::size_t{0}, chunks, [&](std::size_t c) {
+            std::size_t l = left_at[c], r = right_at[c];
+            for (std::size_t i = chunk_begin(range, c); i < chunk_end(range, c); ++i) {
+                scratch_[goes_left(refs_[i]) ? l++ : r++] = refs_[i];
+            }
+        });
+        tbb::parallel_for(std::size_t{0}, chunks, [&](std::size_t c) {
+            std::copy(scratch_.get() + chunk_begin(range, c), scratch_.get() + chunk_end(range, c),
+                      refs_.get() + chunk_begin(range, c));
+        });
+        return total;
+    }
+
+    template <class GoesLeft>
+    Sides partition_serial(std::size_t begin, std::size_t end, GoesLeft goes_left) {
+        Sides sides;
+        std::size_t i = begin, j = end;
+        while (true) {
+            while (i < j && goes_left(refs_[i])) {
+                sides.add(refs_[i++], true);
+            }
+            while (i < j && !goes_left(refs_[j - 1])) {
+                sides.add(refs_[--j], false);
+            }
+            if (i >= j) {
+                break;
+            }
+            std::swap(refs_[i], refs_[j - 1]);
+            sides.add(refs_[i++], true);
+            sides.add(refs_[--j], false);
+        }
+        return sides;
+    }
+
+    // The scratch array of the parallel partition, allocated on first use (disjoint ranges use disjoint
+    // parts of it, so concurrent tasks share it).
+    void scratch() {
+        std::call_once(scratch_once_, [&] { scratch_.reset(new PrimRef[count_]); });
     }
 
     // What testing `count` primitives costs, in primitive tests.
@@ -173,49 +443,56 @@ class Builder {
     }
 
     // Splits `range` into two, or marks it a leaf. Returns false if it became a leaf.
-    bool split(Range& range, Range& left, Range& right) const {
+    bool split(Range& range, Range& left, Range& right) {
         const std::size_t n = range.size();
-        const bool can_split =
-            !range.centroid_bounds.empty() && max_component(range.centroid_bounds.extent()) > 0;
-        if (n <= 1 || !can_split) {
+        const Binning binning(range.centroid_bounds);
+        if (n <= 1 || !binning.can_split()) {
             range.is_leaf = true;  // identical centroids: no plane separates them
             return false;
         }
-        std::size_t mid = 0;
+        Sides sides;
         if (range.depth >= kMedianSplitDepth) {
-            const Vec3 e = range.centroid_bounds.extent();
-            const int axis = e.x > e.y ? (e.x > e.z ? 0 : 2) : (e.y > e.z ? 1 : 2);
-            mid = range.begin + n / 2;
-            std::nth_element(order_.begin() + static_cast<std::ptrdiff_t>(range.begin),
-                             order_.begin() + static_cast<std::ptrdiff_t>(mid),
-                             order_.begin() + static_cast<std::ptrdiff_t>(range.end),
-                             [&](std::uint32_t a, std::uint32_t b) {
-                                 return boxes_[a].center()[axis] < boxes_[b].center()[axis];
+            int axis = 0;
+            for (int a = 1; a < 3; ++a) {
+                if (binning.scale[a] > 0 &&
+                    (binning.scale[axis] == 0 || binning.scale[a] < binning.scale[axis])) {
+                    axis = a;  // the longest axis has the fewest bins per unit
+                }
+            }
+            const std::size_t mid = range.begin + n / 2;
+            std::nth_element(refs_.get() + range.begin, refs_.get() + mid, refs_.get() + range.end,
+                             [&](const PrimRef& a, const PrimRef& b) {
+                                 return a.centroid2(axis) < b.centroid2(axis) ||
+                                        (a.centroid2(axis) == b.centroid2(axis) && a.id() < b.id());
                              });
+            for (std::size_t i = range.begin; i < range.end; ++i) {
+                sides.add(refs_[i], i < mid);
+            }
         } else {
-            const Bins bins = fill_bins(range);
+            Bins bins;
+            fill_bins(range, binning, bins);
             double best_cost = kInf;
             int best_axis = -1;
             int best_bin = 0;
             for (int axis = 0; axis < 3; ++axis) {
-                if (!(range.centroid_bounds.hi[axis] > range.centroid_bounds.lo[axis])) {
+                if (binning.scale[axis] == 0) {
                     continue;
                 }
                 // Sweep from the right to get the cost of every plane between bins.
                 std::array<double, kBins> right_cost{};
-                Bounds3 acc;
+                Box acc;
                 std::size_t count = 0;
                 for (int i = kBins - 1; i > 0; --i) {
                     acc.grow(bins[axis][i].bounds);
                     count += bins[axis][i].count;
-                    right_cost[i] = half_area(acc) * tests(count);
+                    right_cost[i] = acc.half_area() * tests(count);
                 }
-                acc = Bounds3{};
+                acc = Box{};
                 count = 0;
                 for (int i = 0; i < kBins - 1; ++i) {
                     acc.grow(bins[axis][i].bounds);
                     count += bins[axis][i].count;
-                    const double cost = half_area(acc) * tests(count) + right_cost[i + 1];
+                    const double cost = acc.half_area() * tests(count) + right_cost[i + 1];
                     if (count > 0 && count < n && cost < best_cost) {
                         best_cost = cost;
                         best_axis = axis;
@@ -223,7 +500,7 @@ class Builder {
                     }
                 }
             }
-            const double area = half_area(range.bounds);
+            const double area = range.bounds.half_area();
             const double split_cost = options_.traversal_cost + (area > 0 ? best_cost / area : tests(n));
             const double leaf_cost = tests(n);
             const bool fits_leaf = n <= static_cast<std::size_t>(options_.max_leaf_size);
@@ -231,21 +508,15 @@ class Builder {
                 range.is_leaf = true;
                 return false;
             }
-            const Binning binning(range.centroid_bounds);
-            const auto middle = std::partition(
-                order_.begin() + static_cast<std::ptrdiff_t>(range.begin),
-                order_.begin() + static_cast<std::ptrdiff_t>(range.end),
-                [&](std::uint32_t p) { return binning.bin(boxes_[p].center(), best_axis) <= best_bin; });
-            mid = static_cast<std::size_t>(middle - order_.begin());
-            if (mid == range.begin || mid == range.end) {
+            sides = partition(range, [&](const PrimRef& p) { return binning.bin(p, best_axis) <= best_bin; });
+            if (sides.left_count == 0 || sides.left_count == n) {
                 range.is_leaf = true;  // cannot happen with consistent binning; a leaf is still correct
                 return false;
             }
         }
-        left = Range{range.begin, mid, {}, {}, range.depth + 1, false};
-        right = Range{mid, range.end, {}, {}, range.depth + 1, false};
-        measure(left);
-        measure(right);
+        const std::size_t mid = range.begin + sides.left_count;
+        left = Range{range.begin, mid, sides.left, sides.left_centroids, range.depth + 1, false};
+        right = Range{mid, range.end, sides.right, sides.right_centroids, range.depth + 1, false};
         return true;
     }
 
@@ -258,9 +529,9 @@ class Builder {
             double pick_area = -1;
             for (std::size_t c = 0; c < children.size(); ++c) {
                 if (!children[c].is_leaf && children[c].size() > 1 &&
-                    half_area(children[c].bounds) > pick_area) {
+                    children[c].bounds.half_area() > pick_area) {
                     pick = static_cast<int>(c);
-                    pick_area = half_area(children[c].bounds);
+                    pick_area = children[c].bounds.half_area();
                 }
             }
             if (pick < 0) {
@@ -284,14 +555,7 @@ class Builder {
                 continue;
             }
             const Range& child = children[static_cast<std::size_t>(c)];
-            const Bounds3& b = child.bounds;
-            const double pad = std::ldexp(std::max(max_component(abs(b.lo)), max_component(abs(b.hi))), -20);
-            node.lo_x[c] = round_down(b.lo.x - pad);
-            node.lo_y[c] = round_down(b.lo.y - pad);
-            node.lo_z[c] = round_down(b.lo.z - pad);
-            node.hi_x[c] = round_up(b.hi.x + pad);
-            node.hi_y[c] = round_up(b.hi.y + pad);
-            node.hi_z[c] = round_up(b.hi.z + pad);
+            set_child_box(node, c, child.bounds);
             const bool leaf =
                 child.is_leaf || child.size() <= static_cast<std::size_t>(options_.max_leaf_size);
             if (leaf) {
@@ -307,13 +571,30 @@ class Builder {
         store(index, node);
         tbb::task_group group;
         for (const auto& [child_index, child] : inner) {
-            if (child.size() >= kParallelGrain) {
+            if (child.size() >= kTaskGrain) {
                 group.run([this, ci = child_index, ch = child] { build_node(ci, ch); });
             } else {
                 build_node(child_index, child);
             }
         }
         group.wait();
+    }
+
+    // The child's box, padded by a relative 2^-20 so that the float slab arithmetic of traversal never
+    // culls a box the ray touches.
+    static void set_child_box(WideBvhNode& node, int c, const Box& box) {
+        const Box::Corners b = box.corners();
+        double magnitude = 0;
+        for (int a = 0; a < 3; ++a) {
+            magnitude = std::max({magnitude, std::abs(double{b.lo[a]}), std::abs(double{b.hi[a]})});
+        }
+        const double pad = std::ldexp(magnitude, -20);
+        node.lo_x[c] = round_down(b.lo[0] - pad);
+        node.lo_y[c] = round_down(b.lo[1] - pad);
+        node.lo_z[c] = round_down(b.lo[2] - pad);
+        node.hi_x[c] = round_up(b.hi[0] + pad);
+        node.hi_y[c] = round_up(b.hi[1] + pad);
+        node.hi_z[c] = round_up(b.hi[2] + pad);
     }
 
     std::size_t allocate() {
@@ -326,9 +607,11 @@ class Builder {
         nodes_[index] = node;
     }
 
-    std::span<const Bounds3> boxes_;
     BvhBuildOptions options_;
-    std::vector<std::uint32_t>& order_;
+    std::size_t count_;
+    std::unique_ptr<PrimRef[]> refs_;
+    std::unique_ptr<PrimRef[]> scratch_;
+    std::once_flag scratch_once_;
     std::mutex mutex_;
     // A deque keeps nodes in place while other tasks append; copied to a vector at the end.
     std::deque<WideBvhNode> nodes_;
@@ -337,16 +620,20 @@ class Builder {
 }  // namespace
 
 void WideBvh::build(std::span<const Bounds3> boxes, const BvhBuildOptions& options) {
-    order_.resize(boxes.size());
-    std::iota(order_.begin(), order_.end(), 0u);
+    build(
+        boxes.size(), [boxes](std::size_t i) { return boxes[i]; }, options);
+}
+
+void WideBvh::build(std::size_t count, const std::function<Bounds3(std::size_t)>& box_of,
+                    const BvhBuildOptions& options) {
+    order_.clear();
     nodes_.clear();
     bounds_ = Bounds3{};
-    if (boxes.empty()) {
+    if (count == 0) {
         return;
     }
-    Builder builder(boxes, options, order_);
-    bounds_ = builder.root_bounds();
-    nodes_ = builder.build();
+    Builder builder(count, box_of, options, bounds_);
+    nodes_ = builder.build(order_);
     nodes_.shrink_to_fit();
 }
 

@@ -19,6 +19,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <functional>
 #include <limits>
 #include <span>
 #include <type_traits>
@@ -68,6 +69,10 @@ class WideBvh {
     WideBvh() = default;
     // Builds over one box per primitive. Boxes must be finite (unbounded shapes are kept elsewhere).
     void build(std::span<const Bounds3> boxes, const BvhBuildOptions& options = {});
+    // The same, asking `box_of(i)` for primitive i's box (from several threads at once), so that a mesh
+    // need not hold an array of boxes only to hand it over.
+    void build(std::size_t count, const std::function<Bounds3(std::size_t)>& box_of,
+               const BvhBuildOptions& options = {});
 
     // The primitive stored at position i, for leaf ranges: leaves refer to positions in this order.
     const std::vector<std::uint32_t>& primitive_order() const { return order_; }

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "glint/accel/wide_bvh.hpp"
+#include "glint/core/uninitialized_allocator.hpp"
 #include "glint/geometry/mesh_io/mesh_data.hpp"
 #include "glint/geometry/shape.hpp"
 #include "glint/geometry/triangle_block.hpp"
@@ -50,7 +51,7 @@ class Mesh final : public Shape {
     std::vector<std::array<std::uint32_t, 3>> triangles_;
     // The leaves' triangles, four to a block, with their vertices copied in: what the hot loop reads.
     // A BVH leaf of n triangles is ⌈n/4⌉ consecutive blocks starting at its `first`.
-    std::vector<TriangleBlock> blocks_;
+    std::vector<TriangleBlock, UninitializedAllocator<TriangleBlock>> blocks_;  // filled in parallel
     std::vector<double> area_cdf_;  // running sum of triangle areas, for sample_area
     WideBvh bvh_;
     double build_seconds_ = 0;

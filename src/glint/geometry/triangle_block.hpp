@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <limits>
+#include <type_traits>
 
 #include "glint/geometry/triangle.hpp"
 
@@ -17,11 +18,13 @@
 
 namespace glint {
 
+// Left uninitialised by its default constructor (a mesh allocates millions and fills them in parallel):
+// every lane is written, by set() or set_empty(), before use.
 struct alignas(32) TriangleBlock {
     static constexpr int kLanes = 4;
     static constexpr std::uint32_t kEmpty = std::numeric_limits<std::uint32_t>::max();
-    double p[3][3][kLanes] = {};  // [vertex][axis][lane]; an empty lane is all zero (degenerate: never hit)
-    std::uint32_t element[kLanes] = {kEmpty, kEmpty, kEmpty, kEmpty};  // the triangle's index in the mesh
+    double p[3][3][kLanes];         // [vertex][axis][lane]; an empty lane is all zero (degenerate: never hit)
+    std::uint32_t element[kLanes];  // the triangle's index in the mesh, or kEmpty
 
     Vec3 vertex(int v, int lane) const { return {p[v][0][lane], p[v][1][lane], p[v][2][lane]}; }
     void set(int lane, std::uint32_t index, const Vec3& v0, const Vec3& v1, const Vec3& v2) {
@@ -33,7 +36,16 @@ struct alignas(32) TriangleBlock {
         }
         element[lane] = index;
     }
+    void set_empty(int lane) {
+        for (auto& vertex : p) {
+            for (auto& axis : vertex) {
+                axis[lane] = 0;
+            }
+        }
+        element[lane] = kEmpty;
+    }
 };
+static_assert(std::is_trivially_default_constructible_v<TriangleBlock>);
 
 // The nearest lane hit with t in (0, t_max), or −1; fills `out` for it.
 inline int intersect_block_scalar(const WatertightRay& ray, const TriangleBlock& block, double t_max,
