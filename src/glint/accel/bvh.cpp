@@ -15,8 +15,14 @@ BvhAccelerator::BvhAccelerator(std::span<const Shape* const> shapes) : all_(shap
             boxes.push_back(b);
             bounded.push_back(static_cast<std::uint32_t>(i));
         } else if (!b.empty()) {
-            unbounded_.push_back(static_cast<std::uint32_t>(i));
+            direct_.push_back(static_cast<std::uint32_t>(i));
         }
+    }
+    unbounded_count_ = direct_.size();
+    if (boxes.size() == 1) {
+        direct_.push_back(bounded[0]);
+        boxes.clear();
+        bounded.clear();
     }
     bvh_.build(boxes);
     for (std::uint32_t position : bvh_.primitive_order()) {
@@ -28,7 +34,7 @@ BvhAccelerator::BvhAccelerator(std::span<const Shape* const> shapes) : all_(shap
 
 bool BvhAccelerator::intersect(const Ray& ray, double t_max, Hit& hit) const {
     bool found = false;
-    for (std::uint32_t i : unbounded_) {
+    for (std::uint32_t i : direct_) {
         if (all_[i]->intersect(ray, t_max, hit)) {
             t_max = hit.t;
             hit.primitive = i;
@@ -51,7 +57,7 @@ bool BvhAccelerator::intersect(const Ray& ray, double t_max, Hit& hit) const {
 }
 
 bool BvhAccelerator::occluded(const Ray& ray, double t_max) const {
-    for (std::uint32_t i : unbounded_) {
+    for (std::uint32_t i : direct_) {
         if (all_[i]->occluded(ray, t_max)) {
             return true;
         }

@@ -112,7 +112,21 @@ class WideBvh {
         }
     }
 
+    // Where the owner keeps the data of its leaves, so that traversal can prefetch a leaf when it
+    // pushes it: leaf (first, count) starts at data + first · stride bytes (after remap_leaves). The
+    // data must stay where it is for the life of the tree.
+    void set_leaf_data(const void* data, std::size_t stride) {
+        leaf_data_ = static_cast<const char*>(data);
+        leaf_stride_ = stride;
+    }
+
   private:
+    static void prefetch(const void* start, std::size_t bytes) {
+        const char* p = static_cast<const char*>(start);
+        for (std::size_t offset = 0; offset < std::min<std::size_t>(bytes, 512); offset += 64) {
+            __builtin_prefetch(p + offset);
+        }
+    }
     static std::atomic<bool>& scalar_forced() {
         static std::atomic<bool> forced{false};
         return forced;
@@ -128,6 +142,8 @@ class WideBvh {
     std::vector<WideBvhNode> nodes_;  // nodes_[0] is the root (when there are primitives)
     std::vector<std::uint32_t> order_;
     Bounds3 bounds_;
+    const char* leaf_data_ = nullptr;
+    std::size_t leaf_stride_ = 0;
 };
 
 // ---- traversal (in the header so that the owner's leaf test is inlined) ------------------------------
@@ -289,6 +305,13 @@ __attribute__((always_inline)) inline bool WideBvh::traverse(const Ray& ray, dou
             const int i = __builtin_ctz(mask);
             mask &= mask - 1;
             const StackEntry e{node.child[i], node.count[i], t_near[i]};
+            // The child will be read soon (at once, if it is the nearest): start loading it, since
+            // traversal otherwise spends much of its time waiting for nodes and leaves to arrive.
+            if (e.count == 0) {
+                prefetch(&nodes_[e.child], sizeof(WideBvhNode));
+            } else if (leaf_data_ != nullptr) {
+                prefetch(leaf_data_ + std::size_t{e.child} * leaf_stride_, leaf_stride_);
+            }
             int j = top++;
             while (j > base && stack[j - 1].t_near < e.t_near) {
                 stack[j] = stack[j - 1];

@@ -115,6 +115,7 @@ Mesh::Mesh(MeshData data) : positions_(std::move(data.positions)), normals_(std:
             }
         }
     });
+    bvh_.set_leaf_data(blocks_.data(), sizeof(TriangleBlock));
     // Areas in parallel, then their running sum in order (so the sum does not depend on the threads).
     area_cdf_.resize(triangles_.size());
     for_each_index(triangles_.size(), [&](std::size_t i) {
