@@ -2,6 +2,8 @@
 
 #include <chrono>
 
+#include "glint/geometry/sphere.hpp"
+
 namespace glint {
 
 BvhAccelerator::BvhAccelerator(std::span<const Shape* const> shapes) : all_(shapes.begin(), shapes.end()) {
@@ -26,8 +28,12 @@ BvhAccelerator::BvhAccelerator(std::span<const Shape* const> shapes) : all_(shap
     }
     bvh_.build(boxes);
     for (std::uint32_t position : bvh_.primitive_order()) {
-        shapes_.push_back(shapes[bounded[position]]);
+        const Shape* shape = shapes[bounded[position]];
+        shapes_.push_back(shape);
         shape_index_.push_back(bounded[position]);
+        const auto* sphere = dynamic_cast<const Sphere*>(shape);
+        leaf_spheres_.push_back(sphere != nullptr ? LeafSphere{sphere->center(), sphere->radius()}
+                                                  : LeafSphere{});
     }
     build_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
@@ -41,18 +47,37 @@ bool BvhAccelerator::intersect(const Ray& ray, double t_max, Hit& hit) const {
             found = true;
         }
     }
-    found |= bvh_.intersect(ray, t_max,
-                            [&](std::uint32_t first, std::uint32_t count, double& t_limit, auto /*avx2*/) {
-                                bool any = false;
-                                for (std::uint32_t i = first; i < first + count; ++i) {
-                                    if (shapes_[i]->intersect(ray, t_limit, hit)) {
-                                        t_limit = hit.t;
-                                        hit.primitive = shape_index_[i];
-                                        any = true;
-                                    }
-                                }
-                                return any;
-                            });
+    // The nearest sphere so far, if it is nearer than every other hit: its Hit is filled at the end.
+    constexpr std::uint32_t kNone = ~0u;
+    std::uint32_t nearest_sphere = kNone;
+    const double t_max_given = t_max;
+    found |= bvh_.intersect(ray, t_max, [&](std::uint32_t first, std::uint32_t count, double& t_limit, auto) {
+        bool any = false;
+        for (std::uint32_t i = first; i < first + count; ++i) {
+            const LeafSphere& sphere = leaf_spheres_[i];
+            if (sphere.radius > 0) {
+                double t = 0;
+                if (sphere_hit_t(sphere.center, sphere.radius, ray, t_limit, t)) {
+                    t_limit = t;
+                    nearest_sphere = i;
+                    any = true;
+                }
+            } else if (shapes_[i]->intersect(ray, t_limit, hit)) {
+                t_limit = hit.t;
+                hit.primitive = shape_index_[i];
+                nearest_sphere = kNone;
+                any = true;
+            }
+        }
+        return any;
+    });
+    if (nearest_sphere != kNone) {
+        // The same computation finds the same t, now with the normal and uv.
+        if (!shapes_[nearest_sphere]->intersect(ray, t_max_given, hit)) {
+            return false;  // cannot happen
+        }
+        hit.primitive = shape_index_[nearest_sphere];
+    }
     return found;
 }
 
@@ -62,15 +87,17 @@ bool BvhAccelerator::occluded(const Ray& ray, double t_max) const {
             return true;
         }
     }
-    return bvh_.occluded(ray, t_max,
-                         [&](std::uint32_t first, std::uint32_t count, double t_limit, auto /*avx2*/) {
-                             for (std::uint32_t i = first; i < first + count; ++i) {
-                                 if (shapes_[i]->occluded(ray, t_limit)) {
-                                     return true;
-                                 }
-                             }
-                             return false;
-                         });
+    return bvh_.occluded(
+        ray, t_max, [&](std::uint32_t first, std::uint32_t count, double t_limit, auto /*avx2*/) {
+            for (std::uint32_t i = first; i < first + count; ++i) {
+                const LeafSphere& sphere = leaf_spheres_[i];
+                if (sphere.radius > 0 ? sphere_occludes(sphere.center, sphere.radius, ray, t_limit)
+                                      : shapes_[i]->occluded(ray, t_limit)) {
+                    return true;
+                }
+            }
+            return false;
+        });
 }
 
 }  // namespace glint

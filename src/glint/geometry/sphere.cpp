@@ -10,43 +10,9 @@ Bounds3 Sphere::bounds() const {
     return {center_ - r, center_ + r};
 }
 
-bool Sphere::solve(const Ray& ray, double& t0, double& t1) const {
-    // |O + tD − C|² = R² with oc = O − C: a t² + 2 h t + c = 0, h = D·oc (the "half b" form, errata §5.1).
-    const Vec3 oc = ray.origin - center_;
-    const double a = dot(ray.direction, ray.direction);
-    const double h = dot(ray.direction, oc);
-    const double c = dot(oc, oc) - radius_ * radius_;
-    // h² − a c loses every digit when the sphere is small or far (h² ≈ a c). Written as
-    // a (R² − |l|²), with l the offset from C to the line's closest point, it keeps them (pbrt-v4 §6.8).
-    const Vec3 l = oc - (h / a) * ray.direction;
-    const double discriminant = a * (radius_ * radius_ - dot(l, l));
-    if (discriminant < 0) {
-        return false;
-    }
-    // q = −(h + sign(h)·√Δ) never subtracts nearly equal numbers; the roots are q/a and c/q.
-    const double q = -(h + std::copysign(std::sqrt(discriminant), h));
-    if (q == 0) {
-        return false;  // a = c = h = 0 cannot happen for a real ray; q = 0 means a degenerate ray
-    }
-    t0 = q / a;
-    t1 = c / q;
-    if (t0 > t1) {
-        std::swap(t0, t1);
-    }
-    return true;
-}
-
 bool Sphere::intersect(const Ray& ray, double t_max, Hit& hit) const {
-    double t0 = 0;
-    double t1 = 0;
-    if (!solve(ray, t0, t1)) {
-        return false;
-    }
-    double t = t0;
-    if (!(t > 0)) {
-        t = t1;  // the origin is inside the sphere (or the near root is behind it)
-    }
-    if (!(t > 0) || t >= t_max) {
+    double t = 0;
+    if (!sphere_hit_t(center_, radius_, ray, t_max, t)) {
         return false;
     }
     // Project the point back onto the sphere: its error is then a few ulps of |C| + R whatever t was.
@@ -63,12 +29,7 @@ bool Sphere::intersect(const Ray& ray, double t_max, Hit& hit) const {
 }
 
 bool Sphere::occluded(const Ray& ray, double t_max) const {
-    double t0 = 0;
-    double t1 = 0;
-    if (!solve(ray, t0, t1)) {
-        return false;
-    }
-    return (t0 > 0 && t0 < t_max) || (t1 > 0 && t1 < t_max);
+    return sphere_occludes(center_, radius_, ray, t_max);
 }
 
 std::optional<ShapeSample> Sphere::sample_area(Point2 u) const {

@@ -1,8 +1,59 @@
 #pragma once
 
+#include <cmath>
+#include <utility>
+
 #include "glint/geometry/shape.hpp"
 
 namespace glint {
+
+// The roots t0 ≤ t1 of |O + tD − C|² = R², or false when the ray misses. Inline so that the scene's
+// BVH can test spheres in its leaves without a virtual call.
+inline bool sphere_roots(const Vec3& center, double radius, const Ray& ray, double& t0, double& t1) {
+    // |O + tD − C|² = R² with oc = O − C: a t² + 2 h t + c = 0, h = D·oc (the "half b" form, errata §5.1).
+    const Vec3 oc = ray.origin - center;
+    const double a = dot(ray.direction, ray.direction);
+    const double h = dot(ray.direction, oc);
+    const double c = dot(oc, oc) - radius * radius;
+    // h² − a c loses every digit when the sphere is small or far (h² ≈ a c). Written as
+    // a (R² − |l|²), with l the offset from C to the line's closest point, it keeps them (pbrt-v4 §6.8).
+    const Vec3 l = oc - (h / a) * ray.direction;
+    const double discriminant = a * (radius * radius - dot(l, l));
+    if (discriminant < 0) {
+        return false;
+    }
+    // q = −(h + sign(h)·√Δ) never subtracts nearly equal numbers; the roots are q/a and c/q.
+    const double q = -(h + std::copysign(std::sqrt(discriminant), h));
+    if (q == 0) {
+        return false;  // a = c = h = 0 cannot happen for a real ray; q = 0 means a degenerate ray
+    }
+    t0 = q / a;
+    t1 = c / q;
+    if (t0 > t1) {
+        std::swap(t0, t1);
+    }
+    return true;
+}
+
+// The t at which the ray meets the sphere in (0, t_max): the near root, or the far one from inside.
+inline bool sphere_hit_t(const Vec3& center, double radius, const Ray& ray, double t_max, double& t) {
+    double t0 = 0;
+    double t1 = 0;
+    if (!sphere_roots(center, radius, ray, t0, t1)) {
+        return false;
+    }
+    t = t0 > 0 ? t0 : t1;
+    return t > 0 && t < t_max;
+}
+
+inline bool sphere_occludes(const Vec3& center, double radius, const Ray& ray, double t_max) {
+    double t0 = 0;
+    double t1 = 0;
+    if (!sphere_roots(center, radius, ray, t0, t1)) {
+        return false;
+    }
+    return (t0 > 0 && t0 < t_max) || (t1 > 0 && t1 < t_max);
+}
 
 class Sphere final : public Shape {
   public:
@@ -18,9 +69,6 @@ class Sphere final : public Shape {
     static std::unique_ptr<Shape> create(Params& params, const BuildContext& context);
 
   private:
-    // The roots t0 ≤ t1 of |O + tD − C|² = R², or false when the ray misses.
-    bool solve(const Ray& ray, double& t0, double& t1) const;
-
     Vec3 center_;
     double radius_;
 };
