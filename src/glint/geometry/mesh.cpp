@@ -162,62 +162,81 @@ void Mesh::fill_hit(std::uint32_t index, const Ray& ray, double t, double b0, do
     hit.element = index;
 }
 
+namespace {
+
+// The leaf test of the mesh's BVH: the triangle blocks [first, first + ⌈count / 4⌉), nearest hit or
+// any hit. The AVX2 overload is compiled for AVX2 like the traversal that calls it, so that the block
+// test is inlined into the traversal loop (a call would spill every vector register there); the other
+// runs on any CPU. Their bodies differ only in the block test, and are written out twice on purpose:
+// shared code (a lambda, a template) would be compiled without the AVX2 target and block the inlining.
+template <bool kAnyHit>
+struct BlockLeaf {
+    const WatertightRay& ray;
+    const TriangleBlock* blocks;
+    TriangleHit& best;            // the nearest hit so far (nearest-hit only)
+    std::uint32_t& best_element;  // its triangle
+
+    static std::uint32_t block_end(std::uint32_t first, std::uint32_t count) {
+        return first + (count + TriangleBlock::kLanes - 1) / TriangleBlock::kLanes;
+    }
+    // What a hit in `lane` of block b means: the end of an any-hit query, or a nearer t.
+    bool take(std::uint32_t b, int lane, double& t_limit) const {
+        if constexpr (!kAnyHit) {
+            t_limit = best.t;
+            best_element = blocks[b].element[lane];
+        }
+        return true;
+    }
+
+    bool operator()(std::uint32_t first, std::uint32_t count, double& t_limit, std::false_type) const {
+        bool any = false;
+        for (std::uint32_t b = first; b < block_end(first, count); ++b) {
+            const int lane = intersect_block_scalar(ray, blocks[b], t_limit, best);
+            if (lane >= 0) {
+                any = take(b, lane, t_limit);
+                if constexpr (kAnyHit) {
+                    return true;
+                }
+            }
+        }
+        return any;
+    }
+#if defined(__x86_64__) || defined(__i386__)
+    __attribute__((target("avx2,fma"))) bool operator()(std::uint32_t first, std::uint32_t count,
+                                                        double& t_limit, std::true_type) const {
+        bool any = false;
+        for (std::uint32_t b = first; b < block_end(first, count); ++b) {
+            const int lane = intersect_block_avx2(ray, blocks[b], t_limit, best);
+            if (lane >= 0) {
+                any = take(b, lane, t_limit);
+                if constexpr (kAnyHit) {
+                    return true;
+                }
+            }
+        }
+        return any;
+    }
+#endif
+};
+
+}  // namespace
+
 bool Mesh::intersect(const Ray& ray, double t_max, Hit& hit) const {
     const WatertightRay wray(ray);
     TriangleHit best;
-    std::uint32_t best_index = 0;
-    const TriangleBlock* blocks = blocks_.data();
-    const bool found =
-        bvh_.intersect(ray, t_max, [&](std::uint32_t first, std::uint32_t count, double& t_limit, auto avx2) {
-            bool any = false;
-            const std::uint32_t end = first + (count + TriangleBlock::kLanes - 1) / TriangleBlock::kLanes;
-            for (std::uint32_t b = first; b < end; ++b) {
-                int lane = -1;
-#if defined(__x86_64__) || defined(__i386__)
-                if constexpr (decltype(avx2)::value) {
-                    lane = intersect_block_avx2(wray, blocks[b], t_limit, best);
-                } else {
-                    lane = intersect_block_scalar(wray, blocks[b], t_limit, best);
-                }
-#else
-                lane = intersect_block_scalar(wray, blocks[b], t_limit, best);
-#endif
-                if (lane >= 0) {
-                    t_limit = best.t;
-                    best_index = blocks[b].element[lane];
-                    any = true;
-                }
-            }
-            return any;
-        });
-    if (found) {
-        fill_hit(best_index, ray, best.t, best.b0, best.b1, best.b2, hit);
+    std::uint32_t best_element = 0;
+    if (!bvh_.intersect(ray, t_max, BlockLeaf<false>{wray, blocks_.data(), best, best_element})) {
+        return false;
     }
-    return found;
+    fill_hit(best_element, ray, best.t, best.b0, best.b1, best.b2, hit);
+    return true;
 }
 
 bool Mesh::occluded(const Ray& ray, double t_max) const {
     const WatertightRay wray(ray);
-    const TriangleBlock* blocks = blocks_.data();
-    return bvh_.occluded(
-        ray, t_max, [&](std::uint32_t first, std::uint32_t count, double t_limit, auto avx2) {
-            TriangleHit unused;
-            const std::uint32_t end = first + (count + TriangleBlock::kLanes - 1) / TriangleBlock::kLanes;
-            for (std::uint32_t b = first; b < end; ++b) {
-#if defined(__x86_64__) || defined(__i386__)
-                if constexpr (decltype(avx2)::value) {
-                    if (intersect_block_avx2(wray, blocks[b], t_limit, unused) >= 0) {
-                        return true;
-                    }
-                    continue;
-                }
-#endif
-                if (intersect_block_scalar(wray, blocks[b], t_limit, unused) >= 0) {
-                    return true;
-                }
-            }
-            return false;
-        });
+    TriangleHit unused;
+    std::uint32_t unused_element = 0;
+    return bvh_.occluded(ray, t_max, BlockLeaf<true>{wray, blocks_.data(), unused, unused_element});
 }
 
 bool Mesh::intersect_triangle(std::uint32_t index, const Ray& ray, double t_max, Hit& hit) const {

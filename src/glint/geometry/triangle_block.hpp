@@ -63,9 +63,10 @@ inline int intersect_block_scalar(const WatertightRay& ray, const TriangleBlock&
 
 #if defined(__x86_64__) || defined(__i386__)
 // The same answer as intersect_block_scalar, four lanes at a time.
-__attribute__((target("avx2"))) inline int intersect_block_avx2(const WatertightRay& ray,
-                                                                const TriangleBlock& block, double t_max,
-                                                                TriangleHit& out) {
+__attribute__((target("avx2"), always_inline)) inline int intersect_block_avx2(const WatertightRay& ray,
+                                                                               const TriangleBlock& block,
+                                                                               double t_max,
+                                                                               TriangleHit& out) {
     const __m256d ox = _mm256_set1_pd(ray.origin[ray.kx]);
     const __m256d oy = _mm256_set1_pd(ray.origin[ray.ky]);
     const __m256d oz = _mm256_set1_pd(ray.origin[ray.kz]);
