@@ -48,7 +48,7 @@ int run_info(const std::string& scene_path) {
         shapes.push_back(s.get());
     }
     const glint::BvhAccelerator top(shapes);
-    const glint::Bounds3 bounds = top.bvh().bounds();  // of the bounded shapes: planes would make it infinite
+    const glint::Bounds3 bounds = top.bounded_bounds();  // planes would make the scene's bounds infinite
 
     std::printf("scene        %s\n", scene_path.c_str());
     std::printf("primitives   %zu (%zu meshes, %zu other shapes, %zu unbounded kept outside the BVH)\n",

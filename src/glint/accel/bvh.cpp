@@ -14,6 +14,7 @@ BvhAccelerator::BvhAccelerator(std::span<const Shape* const> shapes) : all_(shap
         const Bounds3 b = shapes[i]->bounds();
         bounds_.grow(b);
         if (b.is_finite()) {
+            bounded_bounds_.grow(b);
             boxes.push_back(b);
             bounded.push_back(static_cast<std::uint32_t>(i));
         } else if (!b.empty()) {

@@ -15,6 +15,8 @@ class BvhAccelerator final : public Accelerator {
     bool intersect(const Ray& ray, double t_max, Hit& hit) const override;
     bool occluded(const Ray& ray, double t_max) const override;
     Bounds3 bounds() const override { return bounds_; }
+    // The box of the bounded shapes alone (bounds() is infinite as soon as there is a plane).
+    const Bounds3& bounded_bounds() const { return bounded_bounds_; }
 
     const WideBvh& bvh() const { return bvh_; }
     std::size_t unbounded_count() const { return unbounded_count_; }
@@ -36,6 +38,7 @@ class BvhAccelerator final : public Accelerator {
     std::vector<const Shape*> all_;           // every shape, by scene index
     WideBvh bvh_;
     Bounds3 bounds_;
+    Bounds3 bounded_bounds_;
     double build_seconds_ = 0;
 };
 
