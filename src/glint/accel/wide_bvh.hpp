@@ -278,15 +278,11 @@ __attribute__((always_inline)) inline bool WideBvh::traverse(const Ray& ray, dou
     constexpr int kStackSize = 1024;
     StackEntry stack[kStackSize];
     int top = 0;
-    stack[top++] = {0, 0, 0.0f};
     bool found = false;
     float t_far = bvh_detail::far_limit(t_max);
     alignas(32) float t_near[WideBvhNode::kWidth];
-    while (top > 0) {
-        const StackEntry entry = stack[--top];
-        if (entry.t_near > t_far) {
-            continue;  // a nearer hit was found after this entry was pushed
-        }
+    StackEntry entry{0, 0, 0.0f};  // the root
+    while (true) {
         if (entry.count > 0) {
             if (leaf(entry.child, entry.count, t_max, std::bool_constant<NodeTest::kAvx2>{})) {
                 if constexpr (kAnyHit) {
@@ -295,32 +291,44 @@ __attribute__((always_inline)) inline bool WideBvh::traverse(const Ray& ray, dou
                 found = true;
                 t_far = bvh_detail::far_limit(t_max);
             }
-            continue;
-        }
-        const WideBvhNode& node = nodes_[entry.child];
-        unsigned mask = NodeTest::hits(node, r, t_far, t_near);
-        // Push the children far to near, so the nearest is visited first.
-        const int base = top;
-        while (mask != 0) {
-            const int i = __builtin_ctz(mask);
-            mask &= mask - 1;
-            const StackEntry e{node.child[i], node.count[i], t_near[i]};
-            // The child will be read soon (at once, if it is the nearest): start loading it, since
-            // traversal otherwise spends much of its time waiting for nodes and leaves to arrive.
-            if (e.count == 0) {
-                prefetch(&nodes_[e.child], sizeof(WideBvhNode));
-            } else if (leaf_data_ != nullptr) {
-                prefetch(leaf_data_ + std::size_t{e.child} * leaf_stride_, leaf_stride_);
+        } else {
+            const WideBvhNode& node = nodes_[entry.child];
+            unsigned mask = NodeTest::hits(node, r, t_far, t_near);
+            if (mask != 0 && (mask & (mask - 1)) == 0) {
+                // One child hit (the common case deep in the tree): go on with it, no stack round trip.
+                const int i = __builtin_ctz(mask);
+                entry = {node.child[i], node.count[i], t_near[i]};
+                continue;
             }
-            int j = top++;
-            while (j > base && stack[j - 1].t_near < e.t_near) {
-                stack[j] = stack[j - 1];
-                --j;
+            // Push the children far to near, so the nearest is visited first.
+            const int base = top;
+            while (mask != 0) {
+                const int i = __builtin_ctz(mask);
+                mask &= mask - 1;
+                const StackEntry e{node.child[i], node.count[i], t_near[i]};
+                // The child will be read soon (at once, if it is the nearest): start loading it, since
+                // traversal otherwise spends much of its time waiting for nodes and leaves to arrive.
+                if (e.count == 0) {
+                    prefetch(&nodes_[e.child], sizeof(WideBvhNode));
+                } else if (leaf_data_ != nullptr) {
+                    prefetch(leaf_data_ + std::size_t{e.child} * leaf_stride_, leaf_stride_);
+                }
+                int j = top++;
+                while (j > base && stack[j - 1].t_near < e.t_near) {
+                    stack[j] = stack[j - 1];
+                    --j;
+                }
+                stack[j] = e;
             }
-            stack[j] = e;
         }
+        // The next pending subtree that may still hold a hit nearer than the nearest found.
+        do {
+            if (top == 0) {
+                return found;
+            }
+            entry = stack[--top];
+        } while (entry.t_near > t_far);
     }
-    return found;
 }
 
 #ifdef GLINT_BVH_HAVE_AVX2_PATH
