@@ -239,34 +239,44 @@ struct Binning {
 
 class Builder {
   public:
-    // Reads the boxes in parallel, and returns their union through `bounds`.
+    // Reads the boxes in parallel, measuring the root range on the way; returns the boxes' exact
+    // (double) union through `bounds`.
     Builder(std::size_t count, const std::function<Bounds3(std::size_t)>& box_of,
             const BvhBuildOptions& options, Bounds3& bounds)
         : options_(options), count_(count), refs_(new PrimRef[count]) {
-        bounds = tbb::parallel_reduce(
-            tbb::blocked_range<std::size_t>(0, count_, kChunk), Bounds3{},
-            [&](const tbb::blocked_range<std::size_t>& r, Bounds3 acc) {
+        struct Measure {
+            Bounds3 exact;
+            Box boxes, centroids;
+        };
+        const Measure all = tbb::parallel_reduce(
+            tbb::blocked_range<std::size_t>(0, count_, kChunk), Measure{},
+            [&](const tbb::blocked_range<std::size_t>& r, Measure acc) {
                 for (std::size_t i = r.begin(); i < r.end(); ++i) {
                     const Bounds3 b = box_of(i);
-                    acc.grow(b);
+                    acc.exact.grow(b);
                     refs_[i] = PrimRef{{round_down(b.lo.x), round_down(b.lo.y), round_down(b.lo.z),
                                         std::bit_cast<float>(static_cast<std::uint32_t>(i))},
                                        {round_up(b.hi.x), round_up(b.hi.y), round_up(b.hi.z), 0}};
+                    acc.boxes.grow(refs_[i]);
+                    acc.centroids.grow_point(refs_[i].centroid2());
                 }
                 return acc;
             },
-            [](Bounds3 a, const Bounds3& b) {
-                a.grow(b);  // min and max are exact: the order of the pieces does not matter
+            [](Measure a, const Measure& b) {
+                // min and max are exact: the order of the pieces does not matter.
+                a.exact.grow(b.exact);
+                a.boxes.grow(b.boxes);
+                a.centroids.grow(b.centroids);
                 return a;
             });
+        bounds = all.exact;
+        root_ = Range{0, count_, all.boxes, all.centroids, 0, false};
     }
 
     // Builds the tree; returns its nodes, and the primitive order through `order`.
     std::vector<WideBvhNode> build(std::vector<std::uint32_t>& order) {
-        Range root{0, count_, {}, {}, 0, false};
-        measure(root);
         nodes_.emplace_back();
-        build_node(0, root);
+        build_node(0, root_);
         // Tasks allocate nodes in whatever order they run; renumbering them depth-first makes the layout
         // the same for any thread count, and puts each subtree's nodes together in memory.
         std::vector<WideBvhNode> nodes;
@@ -303,34 +313,6 @@ class Builder {
     static std::size_t chunk_begin(const Range& range, std::size_t c) { return range.begin + c * kChunk; }
     static std::size_t chunk_end(const Range& range, std::size_t c) {
         return std::min(range.end, chunk_begin(range, c + 1));
-    }
-
-    void measure(Range& range) const {
-        auto reduce = [&](std::size_t b, std::size_t e, std::pair<Box, Box> acc) {
-            for (std::size_t i = b; i < e; ++i) {
-                acc.first.grow(refs_[i]);
-                acc.second.grow_point(refs_[i].centroid2());
-            }
-            return acc;
-        };
-        std::pair<Box, Box> result;
-        if (range.size() >= kParallelSplit) {
-            // min and max are exact, so the order the pieces are combined in does not matter.
-            result = tbb::parallel_reduce(
-                tbb::blocked_range<std::size_t>(range.begin, range.end, kChunk), std::pair<Box, Box>{},
-                [&](const tbb::blocked_range<std::size_t>& r, std::pair<Box, Box> acc) {
-                    return reduce(r.begin(), r.end(), acc);
-                },
-                [](std::pair<Box, Box> a, const std::pair<Box, Box>& b) {
-                    a.first.grow(b.first);
-                    a.second.grow(b.second);
-                    return a;
-                });
-        } else {
-            result = reduce(range.begin, range.end, {});
-        }
-        range.bounds = result.first;
-        range.centroid_bounds = result.second;
     }
 
     void fill_bins(std::size_t begin, std::size_t end, const Binning& binning, Bins& bins) const {
@@ -609,6 +591,7 @@ class Builder {
 
     BvhBuildOptions options_;
     std::size_t count_;
+    Range root_;  // all the primitives, measured by the constructor
     std::unique_ptr<PrimRef[]> refs_;
     std::unique_ptr<PrimRef[]> scratch_;
     std::once_flag scratch_once_;

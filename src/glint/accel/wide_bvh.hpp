@@ -274,7 +274,7 @@ __attribute__((always_inline)) inline bool WideBvh::traverse(const Ray& ray, dou
         return false;
     }
     const TraversalRay r(ray);
-    // The build bounds the depth (see kMaxDepth in wide_bvh.cpp), so 7 entries per level suffice.
+    // The build bounds the depth (see kMedianSplitDepth in wide_bvh.cpp), so 7 entries per level suffice.
     constexpr int kStackSize = 1024;
     StackEntry stack[kStackSize];
     int top = 0;
