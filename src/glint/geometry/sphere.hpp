@@ -46,13 +46,11 @@ inline bool sphere_hit_t(const Vec3& center, double radius, const Ray& ray, doub
     return t > 0 && t < t_max;
 }
 
+// Whether the ray meets the sphere in (0, t_max). (A root in range exists exactly when sphere_hit_t
+// finds one: t0 ≤ t1, so when t0 > 0 is beyond t_max, t1 is too.)
 inline bool sphere_occludes(const Vec3& center, double radius, const Ray& ray, double t_max) {
-    double t0 = 0;
-    double t1 = 0;
-    if (!sphere_roots(center, radius, ray, t0, t1)) {
-        return false;
-    }
-    return (t0 > 0 && t0 < t_max) || (t1 > 0 && t1 < t_max);
+    double t = 0;
+    return sphere_hit_t(center, radius, ray, t_max, t);
 }
 
 class Sphere final : public Shape {
