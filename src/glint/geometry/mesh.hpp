@@ -22,6 +22,12 @@ class Mesh final : public Shape {
     // normals from the surrounding faces, and builds the BVH. Throws std::invalid_argument if no
     // triangle has an area.
     explicit Mesh(MeshData data);
+    // Not copyable: the BVH prefetches from this mesh's own triangle blocks (WideBvh::set_leaf_data), so
+    // a copy would point into the original's. Moving keeps the blocks' storage, and the pointer valid.
+    Mesh(const Mesh&) = delete;
+    Mesh& operator=(const Mesh&) = delete;
+    Mesh(Mesh&&) = default;
+    Mesh& operator=(Mesh&&) = default;
 
     Bounds3 bounds() const override { return bvh_.bounds(); }
     bool intersect(const Ray& ray, double t_max, Hit& hit) const override;
