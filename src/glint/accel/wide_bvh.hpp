@@ -300,7 +300,10 @@ __attribute__((always_inline)) inline bool WideBvh::traverse(const Ray& ray, dou
                 entry = {node.child[i], node.count[i], t_near[i]};
                 continue;
             }
-            // Push the children far to near, so the nearest is visited first.
+            // Nearest hit: push the children far to near, so the nearest is visited first (its hit
+            // then culls the others). Any hit: push them as they come. Any occluder will do, and the
+            // nearest box of a shadow ray is usually the surface it leaves, rarely what blocks it:
+            // visiting it first made the dragon's shadow rays 25 % slower (bench/accel.cpp).
             const int base = top;
             while (mask != 0) {
                 const int i = __builtin_ctz(mask);
@@ -314,7 +317,7 @@ __attribute__((always_inline)) inline bool WideBvh::traverse(const Ray& ray, dou
                     prefetch(leaf_data_ + std::size_t{e.child} * leaf_stride_, leaf_stride_);
                 }
                 int j = top++;
-                while (j > base && stack[j - 1].t_near < e.t_near) {
+                while (!kAnyHit && j > base && stack[j - 1].t_near < e.t_near) {
                     stack[j] = stack[j - 1];
                     --j;
                 }
