@@ -137,19 +137,16 @@ std::size_t Mesh::memory_bytes() const {
            area_cdf_.capacity() * sizeof(double) + bvh_.memory_bytes();
 }
 
-void Mesh::fill_hit(std::uint32_t index, const Ray& ray, double t, double b0, double b1, double b2,
-                    Hit& hit) const {
-    (void)ray;
-    const auto& tri = triangles_[index];
-    const Vec3& p0 = positions_[tri[0]];
-    const Vec3& p1 = positions_[tri[1]];
-    const Vec3& p2 = positions_[tri[2]];
-    hit.t = t;
+void Mesh::fill_hit(std::uint32_t index, const Vec3& p0, const Vec3& p1, const Vec3& p2,
+                    const TriangleHit& at, Hit& hit) const {
+    const double b0 = at.b0, b1 = at.b1, b2 = at.b2;
+    hit.t = at.t;
     // The barycentric point lies on the triangle up to rounding, whatever t was.
     hit.point = b0 * p0 + b1 * p1 + b2 * p2;
     hit.normal = normalize(cross(p1 - p0, p2 - p0));
     hit.shading_normal = hit.normal;
     if (!normals_.empty()) {
+        const auto& tri = triangles_[index];
         const Vec3 n = b0 * normals_[tri[0]] + b1 * normals_[tri[1]] + b2 * normals_[tri[2]];
         if (usable_normal(n)) {
             const Vec3 unit = normalize(n);
@@ -173,8 +170,9 @@ template <bool kAnyHit>
 struct BlockLeaf {
     const WatertightRay& ray;
     const TriangleBlock* blocks;
-    TriangleHit& best;            // the nearest hit so far (nearest-hit only)
-    std::uint32_t& best_element;  // its triangle
+    TriangleHit& best;                 // the nearest hit so far (nearest-hit only)
+    const TriangleBlock*& best_block;  // its block
+    int& best_lane;                    // and lane
 
     static std::uint32_t block_end(std::uint32_t first, std::uint32_t count) {
         return first + (count + TriangleBlock::kLanes - 1) / TriangleBlock::kLanes;
@@ -183,7 +181,8 @@ struct BlockLeaf {
     bool take(std::uint32_t b, int lane, double& t_limit) const {
         if constexpr (!kAnyHit) {
             t_limit = best.t;
-            best_element = blocks[b].element[lane];
+            best_block = &blocks[b];
+            best_lane = lane;
         }
         return true;
     }
@@ -224,29 +223,35 @@ struct BlockLeaf {
 bool Mesh::intersect(const Ray& ray, double t_max, Hit& hit) const {
     const WatertightRay wray(ray);
     TriangleHit best;
-    std::uint32_t best_element = 0;
-    if (!bvh_.intersect(ray, t_max, BlockLeaf<false>{wray, blocks_.data(), best, best_element})) {
+    const TriangleBlock* best_block = nullptr;
+    int best_lane = 0;
+    if (!bvh_.intersect(ray, t_max, BlockLeaf<false>{wray, blocks_.data(), best, best_block, best_lane})) {
         return false;
     }
-    fill_hit(best_element, ray, best.t, best.b0, best.b1, best.b2, hit);
+    fill_hit(best_block->element[best_lane], best_block->vertex(0, best_lane),
+             best_block->vertex(1, best_lane), best_block->vertex(2, best_lane), best, hit);
     return true;
 }
 
 bool Mesh::occluded(const Ray& ray, double t_max) const {
     const WatertightRay wray(ray);
     TriangleHit unused;
-    std::uint32_t unused_element = 0;
-    return bvh_.occluded(ray, t_max, BlockLeaf<true>{wray, blocks_.data(), unused, unused_element});
+    const TriangleBlock* unused_block = nullptr;
+    int unused_lane = 0;
+    return bvh_.occluded(ray, t_max,
+                         BlockLeaf<true>{wray, blocks_.data(), unused, unused_block, unused_lane});
 }
 
 bool Mesh::intersect_triangle(std::uint32_t index, const Ray& ray, double t_max, Hit& hit) const {
     const auto& tri = triangles_[index];
+    const Vec3& p0 = positions_[tri[0]];
+    const Vec3& p1 = positions_[tri[1]];
+    const Vec3& p2 = positions_[tri[2]];
     TriangleHit h;
-    if (!glint::intersect_triangle(WatertightRay(ray), positions_[tri[0]], positions_[tri[1]],
-                                   positions_[tri[2]], t_max, h)) {
+    if (!glint::intersect_triangle(WatertightRay(ray), p0, p1, p2, t_max, h)) {
         return false;
     }
-    fill_hit(index, ray, h.t, h.b0, h.b1, h.b2, hit);
+    fill_hit(index, p0, p1, p2, h, hit);
     return true;
 }
 

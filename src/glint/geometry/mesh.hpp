@@ -49,7 +49,10 @@ class Mesh final : public Shape {
     static std::unique_ptr<Shape> create(Params& params, const BuildContext& context);
 
   private:
-    void fill_hit(std::uint32_t index, const Ray& ray, double t, double b0, double b1, double b2,
+    // The hit on triangle `index`, whose vertices are p0, p1, p2 (the caller passes them because it
+    // may have them at hand: the BVH path reads them from the triangle block it has just tested, which
+    // is in cache, instead of going through triangles_ and positions_, two more memory round trips).
+    void fill_hit(std::uint32_t index, const Vec3& p0, const Vec3& p1, const Vec3& p2, const TriangleHit& at,
                   Hit& hit) const;
 
     std::vector<Vec3> positions_;
