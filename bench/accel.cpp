@@ -1,9 +1,11 @@
 // Ray accelerators raced: glint's BVH against Embree, single rays, 2 threads, on the bunny (69 k
 // triangles), the dragon subdivided to 1.6 M triangles, and 100 k spheres; for each, primary rays,
 // diffuse-bounce rays (cosine-distributed from the primary hits) and shadow rays (towards a point
-// light). Also: BVH build rate and bytes per triangle, and how the cost per ray grows from ~2 k to
-// ~2 M triangles (a tessellated sphere). Ratios are printed at the end of the run.
-//   ./build/release/bench/glint_bench_accel
+// light). Also: BVH build rate and bytes per triangle, and how the cost per ray grows from 1 k to
+// 1 M triangles (UV spheres of exactly 1 024 and 1 048 576 triangles; also 2 k to 2 M, subdivided
+// octahedra, whose triangles are all alike). Ratios are printed at the end of the run, from the
+// medians when the runs are repeated:
+//   ./build/release/bench/glint_bench_accel [--benchmark_repetitions=3]
 #include <benchmark/benchmark.h>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -61,6 +63,35 @@ MeshData subdivide(const MeshData& in) {
         out.triangles.push_back({ab, bc, ca});
     }
     return out;
+}
+
+// A unit sphere of exactly 2 · segments · (rings − 1) triangles: `rings` + 1 circles of latitude
+// (the poles included), `segments` meridians, a fan of triangles at each pole and quads between.
+MeshData uv_sphere(std::uint32_t segments, std::uint32_t rings) {
+    MeshData mesh;
+    mesh.positions.push_back({0, 1, 0});
+    for (std::uint32_t r = 1; r < rings; ++r) {
+        const double theta = kPi * r / rings;
+        for (std::uint32_t s = 0; s < segments; ++s) {
+            const double phi = 2 * kPi * s / segments;
+            mesh.positions.push_back(
+                {std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi)});
+        }
+    }
+    mesh.positions.push_back({0, -1, 0});
+    const auto ring_vertex = [&](std::uint32_t r, std::uint32_t s) {
+        return 1 + (r - 1) * segments + s % segments;
+    };
+    const auto south = static_cast<std::uint32_t>(mesh.positions.size() - 1);
+    for (std::uint32_t s = 0; s < segments; ++s) {
+        mesh.triangles.push_back({0, ring_vertex(1, s + 1), ring_vertex(1, s)});
+        for (std::uint32_t r = 1; r + 1 < rings; ++r) {
+            mesh.triangles.push_back({ring_vertex(r, s), ring_vertex(r, s + 1), ring_vertex(r + 1, s + 1)});
+            mesh.triangles.push_back({ring_vertex(r, s), ring_vertex(r + 1, s + 1), ring_vertex(r + 1, s)});
+        }
+        mesh.triangles.push_back({south, ring_vertex(rings - 1, s), ring_vertex(rings - 1, s + 1)});
+    }
+    return mesh;
 }
 
 MeshData tessellated_sphere(int subdivisions) {
@@ -158,6 +189,12 @@ BenchScene& scene(const std::string& name) {
                 s->shapes.push_back(std::make_unique<Sphere>(Vec3{100 * u(rng), 100 * u(rng), 100 * u(rng)},
                                                              0.3 + 0.7 * u(rng)));
             }
+        } else if (name == "sphere1k") {
+            s->shapes.push_back(std::make_unique<Mesh>(uv_sphere(32, 17)));  // 1 024 triangles
+            with_embree = false;
+        } else if (name == "sphere1M") {
+            s->shapes.push_back(std::make_unique<Mesh>(uv_sphere(1024, 513)));  // 1 048 576 triangles
+            with_embree = false;
         } else if (name == "sphere2k") {
             s->shapes.push_back(std::make_unique<Mesh>(tessellated_sphere(4)));  // 2 048 triangles
             with_embree = false;
@@ -234,7 +271,7 @@ void register_all() {
             }
         }
     }
-    for (const char* name : {"sphere2k", "sphere2M"}) {
+    for (const char* name : {"sphere1k", "sphere1M", "sphere2k", "sphere2M"}) {
         benchmark::RegisterBenchmark((std::string("Rays/") + name + "/primary/bvh").c_str(), BM_Rays,
                                      std::string(name), std::string("primary"), false)
             ->UseRealTime()
@@ -245,20 +282,34 @@ void register_all() {
         ->Unit(benchmark::kMillisecond);
 }
 
-// Prints the runs as usual and remembers each one's Mrays/s, for the ratios at the end.
+// Prints the runs as usual and remembers each benchmark's Mrays/s, for the ratios at the end: the
+// median when the runs are repeated (--benchmark_repetitions=N), else the one run.
 class RatioReporter : public benchmark::ConsoleReporter {
   public:
     void ReportRuns(const std::vector<Run>& runs) override {
         ConsoleReporter::ReportRuns(runs);
         for (const Run& run : runs) {
+            if (run.run_type == Run::RT_Aggregate && run.aggregate_name != "median") {
+                continue;
+            }
             const auto it = run.counters.find("Mrays/s");
             if (it != run.counters.end()) {
-                rates[run.benchmark_name()] = it->second.value;
+                rates[run.run_name.function_name] = it->second.value;  // e.g. Rays/bunny/shadow/bvh
             }
         }
     }
     std::map<std::string, double> rates;
 };
+
+// How many times slower a ray is in the larger scene.
+void print_growth(const std::map<std::string, double>& rates, const std::string& small,
+                  const std::string& large, const char* label) {
+    const auto s = rates.find("Rays/" + small + "/primary/bvh");
+    const auto l = rates.find("Rays/" + large + "/primary/bvh");
+    if (s != rates.end() && l != rates.end() && l->second > 0) {
+        std::printf("cost per ray, %s: %.2fx (target <= 3x)\n", label, s->second / l->second);
+    }
+}
 
 }  // namespace
 
@@ -270,22 +321,18 @@ int main(int argc, char** argv) {
     std::printf("\nbvh / embree (rays/s ratio, %d threads; target >= 0.9 on meshes, >= 1.0 on spheres):\n",
                 kThreads);
     for (const auto& [name, rate] : reporter.rates) {
-        const std::size_t slash = name.rfind("/bvh");
-        if (slash == std::string::npos) {
+        const std::string suffix = "/bvh";
+        if (!name.ends_with(suffix)) {
             continue;
         }
-        const std::string base = name.substr(0, slash);
-        const auto other = reporter.rates.find(base + "/embree" + name.substr(slash + 4));
+        const std::string base = name.substr(0, name.size() - suffix.size());
+        const auto other = reporter.rates.find(base + "/embree");
         if (other != reporter.rates.end() && other->second > 0) {
             std::printf("  %-28s %.2f\n", base.c_str(), rate / other->second);
         }
     }
-    const auto small = reporter.rates.find("Rays/sphere2k/primary/bvh/real_time");
-    const auto large = reporter.rates.find("Rays/sphere2M/primary/bvh/real_time");
-    if (small != reporter.rates.end() && large != reporter.rates.end() && large->second > 0) {
-        std::printf("cost per ray, 2 M vs 2 k triangles: %.2fx (target <= 3x)\n",
-                    small->second / large->second);
-    }
+    print_growth(reporter.rates, "sphere1k", "sphere1M", "1 M vs 1 k triangles (UV spheres)");
+    print_growth(reporter.rates, "sphere2k", "sphere2M", "2 M vs 2 k triangles (subdivided octahedra)");
     benchmark::Shutdown();
     return 0;
 }
