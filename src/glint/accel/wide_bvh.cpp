@@ -315,16 +315,44 @@ class Builder {
         return std::min(range.end, chunk_begin(range, c + 1));
     }
 
-    void fill_bins(std::size_t begin, std::size_t end, const Binning& binning, Bins& bins) const {
-        for (std::size_t i = begin; i < end; ++i) {
-            const PrimRef& p = refs_[i];
-            int bin[3];
-            binning.bins(p, bin);
-            for (int axis = 0; axis < 3; ++axis) {
-                bins[axis][bin[axis]].bounds.grow(p);
-                ++bins[axis][bin[axis]].count;
+    static void add_to_bins(const PrimRef& p, const Binning& binning, Bins& bins) {
+        int bin[3];
+        binning.bins(p, bin);
+        for (int axis = 0; axis < 3; ++axis) {
+            bins[axis][bin[axis]].bounds.grow(p);
+            ++bins[axis][bin[axis]].count;
+        }
+    }
+
+    static void merge_bins(Bins& into, const Bins& from) {
+        for (int axis = 0; axis < 3; ++axis) {
+            for (int i = 0; i < kBins; ++i) {
+                into[axis][i].bounds.grow(from[axis][i].bounds);
+                into[axis][i].count += from[axis][i].count;
             }
         }
+    }
+
+    void fill_bins(std::size_t begin, std::size_t end, const Binning& binning, Bins& bins) const {
+        // Neighbouring primitives mostly fall in the same bins, so each update would wait for the one
+        // before it to be stored: alternate between two sets of bins to halve that chain.
+        constexpr std::size_t kTwoBanks = 64;
+        if (end - begin < kTwoBanks) {
+            for (std::size_t i = begin; i < end; ++i) {
+                add_to_bins(refs_[i], binning, bins);
+            }
+            return;
+        }
+        Bins odd;
+        std::size_t i = begin;
+        for (; i + 1 < end; i += 2) {
+            add_to_bins(refs_[i], binning, bins);
+            add_to_bins(refs_[i + 1], binning, odd);
+        }
+        if (i < end) {
+            add_to_bins(refs_[i], binning, bins);
+        }
+        merge_bins(bins, odd);
     }
 
     void fill_bins(const Range& range, const Binning& binning, Bins& bins) const {
@@ -339,12 +367,7 @@ class Builder {
                 return acc;
             },
             [](Bins a, const Bins& b) {
-                for (int axis = 0; axis < 3; ++axis) {
-                    for (int i = 0; i < kBins; ++i) {
-                        a[axis][i].bounds.grow(b[axis][i].bounds);
-                        a[axis][i].count += b[axis][i].count;
-                    }
-                }
+                merge_bins(a, b);
                 return a;
             });
     }
@@ -460,22 +483,34 @@ class Builder {
                 if (binning.scale[axis] == 0) {
                     continue;
                 }
-                // Sweep from the right to get the cost of every plane between bins.
-                std::array<double, kBins> right_cost{};
+                // Sweep from the right to get the cost of every plane between bins. A plane next to an
+                // empty bin splits like its neighbour, so only planes after non-empty bins are costed
+                // (small ranges leave most bins empty, and this loop is most of their build time).
+                std::array<double, kBins> right_cost;
                 Box acc;
                 std::size_t count = 0;
+                double cost_so_far = 0;
                 for (int i = kBins - 1; i > 0; --i) {
-                    acc.grow(bins[axis][i].bounds);
-                    count += bins[axis][i].count;
-                    right_cost[i] = acc.half_area() * tests(count);
+                    if (bins[axis][i].count > 0) {
+                        acc.grow(bins[axis][i].bounds);
+                        count += bins[axis][i].count;
+                        cost_so_far = acc.half_area() * tests(count);
+                    }
+                    right_cost[i] = cost_so_far;
                 }
                 acc = Box{};
                 count = 0;
                 for (int i = 0; i < kBins - 1; ++i) {
+                    if (bins[axis][i].count == 0) {
+                        continue;
+                    }
                     acc.grow(bins[axis][i].bounds);
                     count += bins[axis][i].count;
+                    if (count == n) {
+                        break;
+                    }
                     const double cost = acc.half_area() * tests(count) + right_cost[i + 1];
-                    if (count > 0 && count < n && cost < best_cost) {
+                    if (cost < best_cost) {
                         best_cost = cost;
                         best_axis = axis;
                         best_bin = i;
