@@ -3,14 +3,15 @@
 // diffuse-bounce rays (cosine-distributed from the primary hits) and shadow rays (towards a point
 // light). Also: BVH build rate and bytes per triangle, and how the cost per ray grows from 1 k to
 // 1 M triangles (UV spheres of exactly 1 024 and 1 048 576 triangles; also 2 k to 2 M, subdivided
-// octahedra, whose triangles are all alike). Ratios are printed at the end of the run, from the
-// medians when the runs are repeated:
+// octahedra, whose triangles are roughly uniform, no slivers at the poles). Ratios are printed at the end of
+// the run, from the medians when the runs are repeated:
 //   ./build/release/bench/glint_bench_accel [--benchmark_repetitions=3]
 #include <benchmark/benchmark.h>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include <cassert>
 #include <cstdio>
 #include <map>
 #include <optional>
@@ -69,6 +70,7 @@ MeshData subdivide(const MeshData& in) {
 // A unit sphere of exactly 2 · segments · (rings − 1) triangles: `rings` + 1 circles of latitude
 // (the poles included), `segments` meridians, a fan of triangles at each pole and quads between.
 MeshData uv_sphere(std::uint32_t segments, std::uint32_t rings) {
+    assert(segments >= 3 && rings >= 2);
     MeshData mesh;
     mesh.positions.push_back({0, 1, 0});
     for (std::uint32_t r = 1; r < rings; ++r) {
@@ -249,7 +251,7 @@ void BM_BuildDragon(benchmark::State& state) {
     double bytes_per_triangle = 0;
     for (auto _ : state) {
         // Timed: what a render does with a loaded mesh (moves it into a Mesh, which builds). Not timed:
-        // copying the input, and freeing the mesh.
+        // copying the input, and freeing the built mesh.
         state.PauseTiming();
         MeshData input = data;
         std::optional<Mesh> mesh;

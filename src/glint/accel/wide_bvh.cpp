@@ -486,7 +486,7 @@ class Builder {
                 // Sweep from the right to get the cost of every plane between bins. A plane next to an
                 // empty bin splits like its neighbour, so only planes after non-empty bins are costed
                 // (small ranges leave most bins empty, and this loop is most of their build time).
-                std::array<double, kBins> right_cost;
+                std::array<double, kBins> right_cost{};  // [0] is never read
                 Box acc;
                 std::size_t count = 0;
                 double cost_so_far = 0;

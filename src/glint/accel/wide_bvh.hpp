@@ -309,7 +309,8 @@ __attribute__((always_inline)) inline bool WideBvh::traverse(const Ray& ray, dou
                 const int i = __builtin_ctz(mask);
                 mask &= mask - 1;
                 const StackEntry e{node.child[i], node.count[i], t_near[i]};
-                // The child will be read soon (at once, if it is the nearest): start loading it, since
+                // The child will be read soon (at once, if it is the next one popped: the nearest for a
+                // nearest hit, the last pushed for any hit): start loading it, since
                 // traversal otherwise spends much of its time waiting for nodes and leaves to arrive.
                 if (e.count == 0) {
                     prefetch(&nodes_[e.child], sizeof(WideBvhNode));
