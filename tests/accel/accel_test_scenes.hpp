@@ -109,6 +109,36 @@ inline std::vector<Ray> rays_into(const Bounds3& box, int count, std::uint64_t s
     return rays;
 }
 
+// Rays that start on a surface, as a renderer's shadow and bounce rays do: from the hits of rays_into's
+// rays, a shadow ray to each of two lights (to be asked with t_max = 1, the light) and a bounce ray in
+// a random direction on the side the ray came from. `intersect(ray, hit)` finds the first hits.
+struct SurfaceRays {
+    std::vector<Ray> shadow, bounce;
+};
+template <class Intersect>
+SurfaceRays surface_rays(const Bounds3& box, int count, std::uint64_t seed, Intersect&& intersect) {
+    const double size = length(box.extent());
+    const Vec3 lights[] = {box.center() + Vec3{-0.5, 1.5, 0.5} * size,
+                           box.center() + Vec3{0.3, -0.2, 0.1} * size};
+    std::mt19937_64 rng(seed);
+    SurfaceRays out;
+    for (const Ray& ray : rays_into(box, count, seed)) {
+        Hit hit;
+        if (!intersect(ray, hit)) {
+            continue;
+        }
+        for (const Vec3& light : lights) {
+            out.shadow.push_back(spawn_ray_to(hit, light));
+        }
+        Vec3 direction = random_direction(rng);
+        if (dot(direction, hit.normal) * dot(ray.direction, hit.normal) > 0) {
+            direction = -direction;
+        }
+        out.bounce.push_back(spawn_ray(hit, direction));
+    }
+    return out;
+}
+
 // Compares two accelerators on `rays`: same hit or miss, same primitive and element, same t.
 // hit.element is compared only where it means something: on meshes.
 // Embree's leeway, for a backend that chooses triangles in float: a different triangle of the same

@@ -64,9 +64,9 @@ TEST(Bvh, EmptySceneAndSingleShape) {
 }
 
 // The reference for a mesh: every triangle tested, no BVH.
-bool brute_force(const Mesh& mesh, const Ray& ray, TriangleHit& best, std::uint32_t& element) {
+bool brute_force(const Mesh& mesh, const Ray& ray, TriangleHit& best, std::uint32_t& element,
+                 double t_max = kInf) {
     const WatertightRay wray(ray);
-    double t_max = kInf;
     bool found = false;
     for (std::uint32_t i = 0; i < mesh.triangles().size(); ++i) {
         const auto& tri = mesh.triangles()[i];
@@ -86,16 +86,15 @@ const Mesh& bunny() {
     return mesh;
 }
 
-TEST(Bvh, BunnyMeshGivesTheBruteForceHits) {
-    const Mesh& mesh = bunny();
-    ASSERT_EQ(mesh.triangles().size(), 69451u);  // the file's header says 69451 faces
+// Checks the mesh's nearest hits and any-hit answers on `rays` against brute_force; returns how many hit.
+int expect_brute_force_hits(const Mesh& mesh, const std::vector<Ray>& rays) {
     int hits = 0;
-    for (const Ray& ray : rays_into(mesh.bounds(), 150, 3)) {
+    for (const Ray& ray : rays) {
         TriangleHit reference;
         std::uint32_t element = 0;
         const bool found = brute_force(mesh, ray, reference, element);
         Hit hit;
-        ASSERT_EQ(mesh.intersect(ray, kInf, hit), found);
+        EXPECT_EQ(mesh.intersect(ray, kInf, hit), found);
         EXPECT_EQ(mesh.occluded(ray, kInf), found);
         if (found) {
             ++hits;
@@ -103,7 +102,34 @@ TEST(Bvh, BunnyMeshGivesTheBruteForceHits) {
             EXPECT_EQ(hit.t, reference.t);
         }
     }
-    EXPECT_GT(hits, 25);
+    return hits;
+}
+
+TEST(Bvh, BunnyMeshGivesTheBruteForceHits) {
+    const Mesh& mesh = bunny();
+    ASSERT_EQ(mesh.triangles().size(), 69451u);  // the file's header says 69451 faces
+    EXPECT_GT(expect_brute_force_hits(mesh, rays_into(mesh.bounds(), 150, 3)), 25);
+}
+
+// Rays that start on the surface, as shadow and bounce rays do: the any-hit traversal visits children
+// in node order, not nearest first, and must still find an occluder whenever there is one.
+TEST(Bvh, RaysLeavingTheBunnysSurfaceGiveTheBruteForceAnswers) {
+    const Mesh& mesh = bunny();
+    const auto rays = test::surface_rays(
+        mesh.bounds(), 400, 23, [&](const Ray& ray, Hit& hit) { return mesh.intersect(ray, kInf, hit); });
+    int occluded = 0;
+    for (const Ray& shadow : rays.shadow) {
+        TriangleHit unused;
+        std::uint32_t element = 0;
+        const bool blocked = brute_force(mesh, shadow, unused, element, 1.0);
+        EXPECT_EQ(mesh.occluded(shadow, 1.0), blocked);
+        occluded += blocked ? 1 : 0;
+    }
+    const int bounced = expect_brute_force_hits(mesh, rays.bounce);
+    // Both answers occur often enough for the comparison to mean something.
+    EXPECT_GT(occluded, 40);
+    EXPECT_GT(static_cast<int>(rays.shadow.size()) - occluded, 40);
+    EXPECT_GT(bounced, 20);
 }
 
 TEST(Bvh, BunnyHitsDoNotDependOnTheScale) {
