@@ -82,6 +82,22 @@ void shape_occluded(const RTCOccludedFunctionNArguments* args) {
     }
 }
 
+// Embree's candidate triangle hits, checked in double before Embree may accept them: its float test
+// can find the triangle a ray leaves from (about 0.2 % of the bunny's shadow rays, despite the start
+// offset below), which would be a false shadow, or a false nearest hit at t ≈ 0. Rejected candidates
+// let Embree go on, so the answer is the one the double-precision test gives.
+void mesh_filter(const RTCFilterFunctionNArguments* args) {
+    if (args->N != 1 || args->valid[0] == 0) {
+        return;  // only rtcIntersect1 / rtcOccluded1 are used
+    }
+    const auto* hit = reinterpret_cast<const RTCHit*>(args->hit);
+    const auto* mesh = static_cast<const Mesh*>(args->geometryUserPtr);
+    const QueryContext& q = query(args->context);
+    if (!mesh->hits_triangle(hit->primID, *q.ray, q.t_max)) {
+        args->valid[0] = 0;
+    }
+}
+
 RTCRay embree_ray(const Ray& ray, double t_max) {
     RTCRay r{};
     r.org_x = saturate_to_float(ray.origin.x);
@@ -144,6 +160,9 @@ EmbreeAccelerator::EmbreeAccelerator(std::span<const Shape* const> shapes)
                         mesh->triangles()[t][static_cast<std::size_t>(k)];
                 }
             }
+            rtcSetGeometryUserData(geometry, const_cast<Mesh*>(mesh));
+            rtcSetGeometryIntersectFilterFunction(geometry, mesh_filter);
+            rtcSetGeometryOccludedFilterFunction(geometry, mesh_filter);
         } else {
             geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_USER);
             rtcSetGeometryUserPrimitiveCount(geometry, 1);
@@ -186,15 +205,14 @@ bool EmbreeAccelerator::intersect(const Ray& ray, double t_max, Hit& hit) const 
         return found;
     }
     if (const Mesh* mesh = meshes_[id]) {
-        // Redo Embree's triangle in double; if rounding makes it a miss there, ask the mesh itself.
+        // Embree's triangle passed the double test in mesh_filter; redo it for the hit's details.
         Hit mesh_hit;
-        if (mesh->intersect_triangle(rayhit.hit.primID, ray, t_max, mesh_hit) ||
-            mesh->intersect(ray, t_max, mesh_hit)) {
-            hit = mesh_hit;
-            hit.primitive = id;
-            return true;
+        if (!mesh->intersect_triangle(rayhit.hit.primID, ray, t_max, mesh_hit)) {
+            return found;  // cannot happen: the filter ran this very test
         }
-        return found;
+        hit = mesh_hit;
+        hit.primitive = id;
+        return true;
     }
     hit = user_hit;
     return true;

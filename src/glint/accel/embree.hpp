@@ -2,9 +2,10 @@
 // Accelerator interface as the BVH, so that the two can be checked against each other and raced.
 //
 // Mesh triangles go to Embree as RTC_GEOMETRY_TYPE_TRIANGLE (float); every other bounded shape is a
-// user geometry whose callbacks call the shape in double. Embree chooses the nearest primitive; a
-// triangle hit is then recomputed in double by the mesh, so hits carry the same precision as with the
-// BVH. Unbounded shapes (planes) are tested apart, as in the BVH.
+// user geometry whose callbacks call the shape in double. Embree's candidate triangle hits are checked
+// in double by a filter before Embree accepts them, and the nearest is recomputed in double by the
+// mesh, so the answers are the double-precision ones, as with the BVH. Unbounded shapes (planes) are
+// tested apart, as in the BVH.
 #pragma once
 
 #ifdef GLINT_HAVE_EMBREE

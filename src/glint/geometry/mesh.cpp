@@ -255,6 +255,13 @@ bool Mesh::intersect_triangle(std::uint32_t index, const Ray& ray, double t_max,
     return true;
 }
 
+bool Mesh::hits_triangle(std::uint32_t index, const Ray& ray, double t_max) const {
+    const auto& tri = triangles_[index];
+    TriangleHit unused;
+    return glint::intersect_triangle(WatertightRay(ray), positions_[tri[0]], positions_[tri[1]],
+                                     positions_[tri[2]], t_max, unused);
+}
+
 std::optional<ShapeSample> Mesh::sample_area(Point2 u) const {
     // A triangle with probability proportional to its area, then a uniform point in it.
     const double target = u.x * area();

@@ -35,8 +35,10 @@ class Mesh final : public Shape {
     double area() const override { return area_cdf_.empty() ? 0 : area_cdf_.back(); }
     std::optional<ShapeSample> sample_area(Point2 u) const override;
 
-    // Tests the single triangle `index` (what the Embree backend calls to redo its hit in double).
+    // Tests the single triangle `index` (what the Embree backend calls to check and redo its hits in
+    // double): with the hit's details, or only whether it is hit at t in (0, t_max).
     bool intersect_triangle(std::uint32_t index, const Ray& ray, double t_max, Hit& hit) const;
+    bool hits_triangle(std::uint32_t index, const Ray& ray, double t_max) const;
 
     // For other backends and statistics. Triangles are in BVH order; hit.element indexes this list.
     std::span<const Vec3> positions() const { return positions_; }
