@@ -170,15 +170,15 @@ template <bool kAnyHit>
 struct BlockLeaf {
     const WatertightRay& ray;
     const TriangleBlock* blocks;
-    TriangleHit& best;                 // the nearest hit so far (nearest-hit only)
-    const TriangleBlock*& best_block;  // its block
-    int& best_lane;                    // and lane
+    TriangleHit best{};                         // the nearest hit so far (nearest-hit only)
+    const TriangleBlock* best_block = nullptr;  // its block
+    int best_lane = 0;                          // and lane
 
     static std::uint32_t block_end(std::uint32_t first, std::uint32_t count) {
         return first + (count + TriangleBlock::kLanes - 1) / TriangleBlock::kLanes;
     }
     // What a hit in `lane` of block b means: the end of an any-hit query, or a nearer t.
-    bool take(std::uint32_t b, int lane, double& t_limit) const {
+    bool take(std::uint32_t b, int lane, double& t_limit) {
         if constexpr (!kAnyHit) {
             t_limit = best.t;
             best_block = &blocks[b];
@@ -187,7 +187,7 @@ struct BlockLeaf {
         return true;
     }
 
-    bool operator()(std::uint32_t first, std::uint32_t count, double& t_limit, std::false_type) const {
+    bool operator()(std::uint32_t first, std::uint32_t count, double& t_limit, std::false_type) {
         bool any = false;
         for (std::uint32_t b = first; b < block_end(first, count); ++b) {
             const int lane = intersect_block_scalar(ray, blocks[b], t_limit, best);
@@ -202,7 +202,7 @@ struct BlockLeaf {
     }
 #if defined(__x86_64__) || defined(__i386__)
     __attribute__((target("avx2,fma"))) bool operator()(std::uint32_t first, std::uint32_t count,
-                                                        double& t_limit, std::true_type) const {
+                                                        double& t_limit, std::true_type) {
         bool any = false;
         for (std::uint32_t b = first; b < block_end(first, count); ++b) {
             const int lane = intersect_block_avx2(ray, blocks[b], t_limit, best);
@@ -222,24 +222,20 @@ struct BlockLeaf {
 
 bool Mesh::intersect(const Ray& ray, double t_max, Hit& hit) const {
     const WatertightRay wray(ray);
-    TriangleHit best;
-    const TriangleBlock* best_block = nullptr;
-    int best_lane = 0;
-    if (!bvh_.intersect(ray, t_max, BlockLeaf<false>{wray, blocks_.data(), best, best_block, best_lane})) {
+    BlockLeaf<false> leaf{wray, blocks_.data()};
+    if (!bvh_.intersect(ray, t_max, leaf)) {
         return false;
     }
-    fill_hit(best_block->element[best_lane], best_block->vertex(0, best_lane),
-             best_block->vertex(1, best_lane), best_block->vertex(2, best_lane), best, hit);
+    const TriangleBlock& block = *leaf.best_block;
+    const int lane = leaf.best_lane;
+    fill_hit(block.element[lane], block.vertex(0, lane), block.vertex(1, lane), block.vertex(2, lane),
+             leaf.best, hit);
     return true;
 }
 
 bool Mesh::occluded(const Ray& ray, double t_max) const {
     const WatertightRay wray(ray);
-    TriangleHit unused;
-    const TriangleBlock* unused_block = nullptr;
-    int unused_lane = 0;
-    return bvh_.occluded(ray, t_max,
-                         BlockLeaf<true>{wray, blocks_.data(), unused, unused_block, unused_lane});
+    return bvh_.occluded(ray, t_max, BlockLeaf<true>{wray, blocks_.data()});
 }
 
 bool Mesh::intersect_triangle(std::uint32_t index, const Ray& ray, double t_max, Hit& hit) const {
