@@ -21,15 +21,6 @@ struct QueryContext {
     double t_max;  // the caller's bound, in double
 };
 
-// The smallest float not below t: Embree's float bounds must not cut off a double hit at t.
-float round_up(double t) {
-    float f = saturate_to_float(t);
-    if (static_cast<double>(f) < t) {
-        f = std::nextafter(f, std::numeric_limits<float>::infinity());
-    }
-    return f;
-}
-
 const QueryContext& query(RTCIntersectContext* context) {
     return *reinterpret_cast<QueryContext*>(context);
 }
@@ -59,7 +50,7 @@ void shape_intersect(const RTCIntersectFunctionNArguments* args) {
     }
     hit.primitive = args->geomID;
     *q.hit = hit;
-    rayhit->ray.tfar = round_up(hit.t);
+    rayhit->ray.tfar = round_up_to_float(hit.t);  // Embree's float bound must not cut off t
     rayhit->hit.geomID = args->geomID;
     rayhit->hit.primID = args->primID;
     rayhit->hit.u = 0;
@@ -110,7 +101,7 @@ RTCRay embree_ray(const Ray& ray, double t_max) {
     // (offset only for double precision) could hit that surface again. Start it a few float ulps of
     // the origin's size along, in the ray's units. (The BVH needs no such start: it works in double.)
     r.tnear = saturate_to_float(8 * 0x1p-24 * max_component(abs(ray.origin)) / length(ray.direction));
-    r.tfar = round_up(t_max);
+    r.tfar = round_up_to_float(t_max);
     r.mask = 0xffffffffu;
     r.flags = 0;
     return r;

@@ -29,22 +29,6 @@ constexpr std::size_t kTaskGrain = 4096;
 constexpr std::size_t kParallelSplit = 1 << 18;
 constexpr std::size_t kChunk = 1 << 13;
 
-// float boxes that contain the double ones: rounded outwards.
-float round_down(double v) {
-    float f = saturate_to_float(v);
-    if (static_cast<double>(f) > v) {
-        f = std::nextafter(f, -std::numeric_limits<float>::infinity());
-    }
-    return f;
-}
-float round_up(double v) {
-    float f = saturate_to_float(v);
-    if (static_cast<double>(f) < v) {
-        f = std::nextafter(f, std::numeric_limits<float>::infinity());
-    }
-    return f;
-}
-
 // Four floats operated on together: SSE on x86-64 (always present there), a plain loop elsewhere. The
 // build's boxes are kept in these, lanes x, y, z and one unused, so that growing a box is two
 // instructions instead of six compare-and-branch pairs.
@@ -254,9 +238,10 @@ class Builder {
                 for (std::size_t i = r.begin(); i < r.end(); ++i) {
                     const Bounds3 b = box_of(i);
                     acc.exact.grow(b);
-                    refs_[i] = PrimRef{{round_down(b.lo.x), round_down(b.lo.y), round_down(b.lo.z),
-                                        std::bit_cast<float>(static_cast<std::uint32_t>(i))},
-                                       {round_up(b.hi.x), round_up(b.hi.y), round_up(b.hi.z), 0}};
+                    refs_[i] = PrimRef{
+                        {round_down_to_float(b.lo.x), round_down_to_float(b.lo.y),
+                         round_down_to_float(b.lo.z), std::bit_cast<float>(static_cast<std::uint32_t>(i))},
+                        {round_up_to_float(b.hi.x), round_up_to_float(b.hi.y), round_up_to_float(b.hi.z), 0}};
                     acc.boxes.grow(refs_[i]);
                     acc.centroids.grow_point(refs_[i].centroid2());
                 }
@@ -606,12 +591,12 @@ class Builder {
             magnitude = std::max({magnitude, std::abs(double{b.lo[a]}), std::abs(double{b.hi[a]})});
         }
         const double pad = std::ldexp(magnitude, -20);
-        node.lo_x[c] = round_down(b.lo[0] - pad);
-        node.lo_y[c] = round_down(b.lo[1] - pad);
-        node.lo_z[c] = round_down(b.lo[2] - pad);
-        node.hi_x[c] = round_up(b.hi[0] + pad);
-        node.hi_y[c] = round_up(b.hi[1] + pad);
-        node.hi_z[c] = round_up(b.hi[2] + pad);
+        node.lo_x[c] = round_down_to_float(b.lo[0] - pad);
+        node.lo_y[c] = round_down_to_float(b.lo[1] - pad);
+        node.lo_z[c] = round_down_to_float(b.lo[2] - pad);
+        node.hi_x[c] = round_up_to_float(b.hi[0] + pad);
+        node.hi_y[c] = round_up_to_float(b.hi[1] + pad);
+        node.hi_z[c] = round_up_to_float(b.hi[2] + pad);
     }
 
     std::size_t allocate() {

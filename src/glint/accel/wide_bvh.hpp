@@ -47,6 +47,23 @@ inline float saturate_to_float(double x) {
     return static_cast<float>(x);
 }
 
+// The nearest float at or below / at or above x (a float box rounded this way contains the double one;
+// a float bound rounded up never cuts off a double t).
+inline float round_down_to_float(double x) {
+    float f = saturate_to_float(x);
+    if (static_cast<double>(f) > x) {
+        f = std::nextafter(f, -std::numeric_limits<float>::infinity());
+    }
+    return f;
+}
+inline float round_up_to_float(double x) {
+    float f = saturate_to_float(x);
+    if (static_cast<double>(f) < x) {
+        f = std::nextafter(f, std::numeric_limits<float>::infinity());
+    }
+    return f;
+}
+
 struct alignas(32) WideBvhNode {
     static constexpr int kWidth = 8;
     // Child boxes; an empty slot has lo = +inf and hi = −inf, which no ray hits.
