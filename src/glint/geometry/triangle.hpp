@@ -5,8 +5,9 @@
 // same numbers in both, and an edge shared by two triangles yields exactly negated edge functions, so
 // a ray through a shared edge or vertex is counted inside at least one of them: no ray slips through a
 // closed mesh. Points exactly on an edge count as inside (both signs are accepted).
-// This relies on each product being rounded on its own: no fused multiply-add contraction (GCC's
-// default in ISO mode, -std=c++20, is -ffp-contract=off; keep it so).
+// This relies on each product being rounded on its own: no fused multiply-add contraction. The build
+// says so explicitly (-ffp-contract=off in CMakeLists.txt): code inlined into the AVX2+FMA traversal
+// was contracted otherwise.
 #pragma once
 
 #include <cstdint>
