@@ -8,6 +8,7 @@
 #include "glint/geometry/mesh_io/mesh_data.hpp"
 #include "glint/geometry/plane.hpp"
 #include "glint/geometry/triangle.hpp"
+#include "test_data.hpp"
 
 namespace glint {
 namespace {
@@ -80,9 +81,8 @@ bool brute_force(const Mesh& mesh, const Ray& ray, TriangleHit& best, std::uint3
     return found;
 }
 
-const Mesh& bunny() {
-    static const Mesh mesh(
-        load_mesh_file(std::filesystem::path(GLINT_SHARED_DIR) / "data/meshes/stanford-bunny.obj"));
+const Mesh& bunny(const std::filesystem::path& file) {
+    static const Mesh mesh(load_mesh_file(file));
     return mesh;
 }
 
@@ -106,7 +106,8 @@ int expect_brute_force_hits(const Mesh& mesh, const std::vector<Ray>& rays) {
 }
 
 TEST(Bvh, BunnyMeshGivesTheBruteForceHits) {
-    const Mesh& mesh = bunny();
+    GLINT_REQUIRE_DATA_FILE(bunny_file, "meshes/stanford-bunny.obj");
+    const Mesh& mesh = bunny(bunny_file);
     ASSERT_EQ(mesh.triangles().size(), 69451u);  // the file's header says 69451 faces
     EXPECT_GT(expect_brute_force_hits(mesh, rays_into(mesh.bounds(), 150, 3)), 25);
 }
@@ -114,7 +115,8 @@ TEST(Bvh, BunnyMeshGivesTheBruteForceHits) {
 // Rays that start on the surface, as shadow and bounce rays do: the any-hit traversal visits children
 // in node order, not nearest first, and must still find an occluder whenever there is one.
 TEST(Bvh, RaysLeavingTheBunnysSurfaceGiveTheBruteForceAnswers) {
-    const Mesh& mesh = bunny();
+    GLINT_REQUIRE_DATA_FILE(bunny_file, "meshes/stanford-bunny.obj");
+    const Mesh& mesh = bunny(bunny_file);
     const auto rays = test::surface_rays(
         mesh.bounds(), 400, 23, [&](const Ray& ray, Hit& hit) { return mesh.intersect(ray, kInf, hit); });
     int occluded = 0;
@@ -133,8 +135,8 @@ TEST(Bvh, RaysLeavingTheBunnysSurfaceGiveTheBruteForceAnswers) {
 }
 
 TEST(Bvh, BunnyHitsDoNotDependOnTheScale) {
-    const MeshData original =
-        load_mesh_file(std::filesystem::path(GLINT_SHARED_DIR) / "data/meshes/stanford-bunny.obj");
+    GLINT_REQUIRE_DATA_FILE(bunny_file, "meshes/stanford-bunny.obj");
+    const MeshData original = load_mesh_file(bunny_file);
     const Mesh unit(original);
     for (double scale : {0.1, 1000.0}) {
         MeshData scaled = original;

@@ -8,6 +8,7 @@
 #include "glint/accel/embree.hpp"
 #include "glint/accel/linear.hpp"
 #include "glint/geometry/plane.hpp"
+#include "test_data.hpp"
 
 namespace glint {
 namespace {
@@ -33,9 +34,9 @@ TEST(Embree, RandomSpheresAndAPlaneGiveTheBvhsAndTheListsHits) {
 }
 
 TEST(Embree, BunnyAndMeshesGiveTheBvhsHits) {
+    GLINT_REQUIRE_DATA_FILE(bunny_file, "meshes/stanford-bunny.obj");
     std::vector<std::unique_ptr<Shape>> shapes;
-    shapes.push_back(std::make_unique<Mesh>(
-        load_mesh_file(std::filesystem::path(GLINT_SHARED_DIR) / "data/meshes/stanford-bunny.obj")));
+    shapes.push_back(std::make_unique<Mesh>(load_mesh_file(bunny_file)));
     shapes.push_back(std::make_unique<Mesh>(test::tessellated_sphere(4, 0.03, {0.1, 0.1, 0.1})));
     shapes.push_back(std::make_unique<Sphere>(Vec3{-0.1, 0.1, 0}, 0.02));
     const auto ptrs = pointers(shapes);
@@ -47,9 +48,9 @@ TEST(Embree, BunnyAndMeshesGiveTheBvhsHits) {
 // Rays leaving a surface: Embree's float test can find the triangle a ray starts on, which the
 // backend's double-precision filter must reject (else: false shadows and hits at t ≈ 0).
 TEST(Embree, RaysLeavingTheBunnysSurfaceGiveTheBvhsAnswers) {
+    GLINT_REQUIRE_DATA_FILE(bunny_file, "meshes/stanford-bunny.obj");
     std::vector<std::unique_ptr<Shape>> shapes;
-    shapes.push_back(std::make_unique<Mesh>(
-        load_mesh_file(std::filesystem::path(GLINT_SHARED_DIR) / "data/meshes/stanford-bunny.obj")));
+    shapes.push_back(std::make_unique<Mesh>(load_mesh_file(bunny_file)));
     const auto ptrs = pointers(shapes);
     const BvhAccelerator bvh(ptrs);
     const EmbreeAccelerator embree(ptrs);

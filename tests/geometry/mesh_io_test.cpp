@@ -8,6 +8,7 @@
 
 #include "glint/geometry/mesh.hpp"
 #include "glint/geometry/mesh_io/mesh_data.hpp"
+#include "test_data.hpp"
 
 namespace glint {
 namespace {
@@ -245,16 +246,17 @@ TEST(MeshFiles, EveryTruncationOrCorruptionIsAnErrorOrAMeshNeverACrash) {
     EXPECT_GT(errors, 50);
 }
 
-TEST(MeshFiles, SharedMeshesLoad) {
-    const std::filesystem::path dir = std::filesystem::path(GLINT_SHARED_DIR) / "data/meshes";
-    const MeshData igea = load_mesh_file(dir / "igea.ply");  // one long triangle strip
+TEST(MeshFiles, StanfordMeshesLoad) {
+    GLINT_REQUIRE_DATA_FILE(igea_file, "meshes/igea.ply");
+    GLINT_REQUIRE_DATA_FILE(dragon_file, "meshes/dragon_100k_vcg.ply");
+    const MeshData igea = load_mesh_file(igea_file);  // one long triangle strip
     EXPECT_EQ(igea.positions.size(), 134345u);
     EXPECT_GT(igea.triangles.size(), igea.positions.size());  // a closed surface has about 2 V faces
-    const MeshData dragon = load_mesh_file(dir / "dragon_100k_vcg.ply");
+    const MeshData dragon = load_mesh_file(dragon_file);
     EXPECT_EQ(dragon.positions.size(), 50000u);
     EXPECT_EQ(dragon.normals.size(), 50000u);
     EXPECT_EQ(dragon.triangles.size(), 100000u);
-    EXPECT_THROW(load_mesh_file(dir / "missing.obj"), SceneError);
+    EXPECT_THROW(load_mesh_file(igea_file.parent_path() / "missing.obj"), SceneError);
     EXPECT_THROW(load_mesh_file(write_file("mesh.stl", "solid")), SceneError);
 }
 

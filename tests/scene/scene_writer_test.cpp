@@ -8,6 +8,7 @@
 #include "glint/render/render.hpp"
 #include "glint/scene/scene.hpp"
 #include "glint/scene/scene_desc.hpp"
+#include "test_data.hpp"
 
 namespace glint {
 namespace {
@@ -116,8 +117,7 @@ TEST(SceneWriter, ExampleAndSharedScenesRoundTrip) {
     int count = 0;
     int folders = 0;
     for (const std::filesystem::path& folder :
-         {std::filesystem::path(GLINT_SOURCE_DIR) / "examples",
-          std::filesystem::path(GLINT_SHARED_DIR) / "data" / "scenes"}) {
+         {std::filesystem::path(GLINT_SOURCE_DIR) / "examples", test::data_dir() / "scenes"}) {
         if (!std::filesystem::is_directory(folder)) {
             continue;
         }
@@ -133,7 +133,7 @@ TEST(SceneWriter, ExampleAndSharedScenesRoundTrip) {
         }
     }
     if (folders == 0) {
-        GTEST_SKIP() << "neither examples/ nor " GLINT_SHARED_DIR "/data/scenes exists here";
+        GTEST_SKIP() << "neither examples/ nor " << (test::data_dir() / "scenes").string() << " exists here";
     }
     EXPECT_GT(count, 0) << "no scene files found to round-trip";
 }
