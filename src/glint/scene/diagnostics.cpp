@@ -30,13 +30,21 @@ std::string format_diagnostic(const SourcePos& pos, const std::string& message) 
     out << "error: " << message;
     if (pos.file && pos.line > 0 && pos.line <= static_cast<int>(pos.file->lines.size())) {
         std::string text = pos.file->lines[static_cast<size_t>(pos.line - 1)];
-        int column = pos.column;
+        // The column comes from the parser and may lie past the end of our copy of the line (a
+        // parser that counted characters of another encoding): keep it within the line.
+        int column = std::clamp(pos.column, 1, static_cast<int>(text.size()) + 1);
         // A very long line (generated JSON, a minified file) is cut to a window around the column.
         constexpr int kWindow = 100;
         if (static_cast<int>(text.size()) > 2 * kWindow) {
             const int start = std::max(0, column - 1 - kWindow / 2);
             text = (start > 0 ? "..." : "") + text.substr(static_cast<size_t>(start), kWindow) + "...";
             column = column - start + (start > 0 ? 3 : 0);
+        }
+        // Control characters (a zero byte, an escape sequence) would garble the terminal: shown as '?'.
+        for (char& c : text) {
+            if ((static_cast<unsigned char>(c) < 0x20 && c != '\t') || c == 0x7f) {
+                c = '?';
+            }
         }
         out << "\n    " << text << "\n    ";
         // Keep tabs in the caret line so the caret sits under the right character.

@@ -1,6 +1,7 @@
 // The parsed, format-independent description of a scene: step one of scene file → SceneDesc → Scene.
 #pragma once
 
+#include <cstddef>
 #include <filesystem>
 #include <string>
 
@@ -13,8 +14,18 @@ struct SceneDesc {
     std::filesystem::path base_dir;  // relative paths inside the scene resolve against this folder
 };
 
+// Limits on a scene's text, checked before it is trusted (docs/scene-format.md, "Limits"):
+// the size of a file; how deep lists and maps nest (yaml-cpp's parser stops at this depth, and the
+// converter holds aliased values to it; yaml-cpp itself refuses a few hundred levels); how many values the
+// scene expands to, counting an alias each time it is used (a hand-written scene has thousands; the cap keeps
+// an alias bomb to about 0.2 GB and a fraction of a second).
+inline constexpr std::size_t kMaxSceneFileBytes = std::size_t{64} << 20;
+inline constexpr std::size_t kMaxSceneNesting = 100;
+inline constexpr std::size_t kMaxSceneValues = 1'000'000;
+
 // Parses YAML (and so JSON) text. `display_path` names the file in error messages.
-// Throws SceneError on a syntax error, a duplicate key or a top level that is not a map.
+// Throws SceneError on a syntax error, a duplicate key, a top level that is not a map, text that is
+// not UTF-8, or text beyond the limits above.
 SceneDesc parse_scene_text(const std::string& text, const std::string& display_path,
                            const std::filesystem::path& base_dir);
 
