@@ -157,9 +157,10 @@ int main(int argc, char** argv) {
     render->add_option(
         "-o,--output", options.output,
         "Output image: .png (8-bit sRGB), .pfm or .exr (linear float radiance); default: <scene>.png");
-    render->add_option("--width", options.width, "Image width in pixels")->check(CLI::Range(1, 1 << 15));
-    render->add_option("--height", options.height, "Image height in pixels")->check(CLI::Range(1, 1 << 15));
-    render->add_option("--spp", options.spp, "Samples per pixel")->check(CLI::Range(1, 1 << 20));
+    // The ranges of these four are checked by the scene builder, which says why a value is too large.
+    render->add_option("--width", options.width, "Image width in pixels");
+    render->add_option("--height", options.height, "Image height in pixels");
+    render->add_option("--spp", options.spp, "Samples per pixel");
     render->add_option(
         "--sampler", options.sampler, "Sample pattern (" + [] {
             std::string names;
@@ -176,8 +177,8 @@ int main(int argc, char** argv) {
             }
             return names;
         }() + ")");
-    render->add_option("--max-depth", options.max_depth, "Longest path in bounces (whitted, path)")
-        ->check(CLI::Range(1, 1 << 16));
+    render->add_option("--max-depth", options.max_depth,
+                       "Longest path in bounces (whitted, path; at most 1024)");
     render->add_option(
         "--accel", options.accelerator, "Ray accelerator (" + [] {
             std::string names;

@@ -1,5 +1,8 @@
 #include "glint/integrator/whitted.hpp"
 
+#include <array>
+#include <vector>
+
 #include "glint/integrator/direct_lighting.hpp"
 #include "glint/scene/scene.hpp"
 
@@ -13,37 +16,58 @@ Rgb segment_transmittance(const Material& material, const Hit& hit, const Ray& r
     return sigma.is_black() ? Rgb(1.0) : beer_transmittance(sigma, hit.t * length(ray.direction));
 }
 
-Rgb WhittedIntegrator::radiance(const Scene& scene, const Ray& ray, SampleStream& samples,
+// The recursion of Whitted's model, L(ray) = T · (Le + direct + Σ lobe · L(branch)), is run as a loop
+// over an explicit stack of pending branches, in the order the recursion would take them (a node, its
+// first branch's whole subtree, then its second), so the random numbers go to the same places. A
+// recursive version overflowed the stack of a worker thread at depths of a few thousand; this one needs
+// one pending entry per level at most. The stack is per thread and reused, so no allocation per ray.
+Rgb WhittedIntegrator::radiance(const Scene& scene, const Ray& camera_ray, SampleStream& samples,
                                 RayCounters& rays) const {
     ++rays.camera;
-    return trace(scene, ray, 0, 1.0, samples, rays);
-}
-
-Rgb WhittedIntegrator::trace(const Scene& scene, const Ray& ray, int depth, double weight,
-                             SampleStream& samples, RayCounters& rays) const {
-    Hit hit;
-    if (!scene.intersect(ray, kInf, hit)) {
-        return scene.escaped(ray.direction);
-    }
-    const Material& material = scene.material(hit);
-    const Vec3 wo = normalize(-ray.direction);
-    Rgb radiance = material.emitted(hit, wo) + direct_lighting(scene, hit, material, wo, samples, rays);
-
-    if (depth < max_depth_) {
+    struct Branch {
+        Ray ray;
+        int depth;
+        double weight;   // the largest channel of the product of the lobe weights from the camera
+        Rgb throughput;  // what this branch's radiance is multiplied by on its way to the camera
+    };
+    thread_local std::vector<Branch> pending;
+    pending.clear();
+    pending.push_back({camera_ray, 0, 1.0, Rgb(1.0)});
+    Rgb radiance;
+    while (!pending.empty()) {
+        const Branch branch = pending.back();
+        pending.pop_back();
+        const Ray& ray = branch.ray;
+        Hit hit;
+        if (!scene.intersect(ray, kInf, hit)) {
+            radiance += branch.throughput * scene.escaped(ray.direction);
+            continue;
+        }
+        const Material& material = scene.material(hit);
+        const Vec3 wo = normalize(-ray.direction);
+        const Rgb throughput = branch.throughput * segment_transmittance(material, hit, ray);
+        radiance += throughput *
+                    (material.emitted(hit, wo) + direct_lighting(scene, hit, material, wo, samples, rays));
+        if (branch.depth >= max_depth_) {
+            continue;
+        }
         // The perfect-specular lobes: a BsdfSample's pdf for a delta lobe is the probability of
         // choosing it, so f·|cos| is that lobe's share of the light (the Fresnel reflectance R for
         // reflection, 1 − R for refraction). Asking with u.x at both ends of [0, 1) finds both
         // lobes of a dielectric, which are then both traced: Whitted's deterministic split.
         const std::optional<BsdfSample> first = material.sample(hit, wo, {0.0, 0.5});
         const std::optional<BsdfSample> second = material.sample(hit, wo, {1.0 - 0x1p-53, 0.5});
+        // Branches to follow, at most two, in the order they are traced.
+        std::array<Branch, 2> next;
+        int count = 0;
         const auto follow = [&](const BsdfSample& s, const Rgb& lobe_weight) {
-            const double branch_weight = weight * lobe_weight.max_component();
+            const double branch_weight = branch.weight * lobe_weight.max_component();
             if (!(branch_weight >= kMinBranchWeight)) {
                 return;
             }
             ++rays.secondary;
-            radiance +=
-                lobe_weight * trace(scene, spawn_ray(hit, s.wi), depth + 1, branch_weight, samples, rays);
+            next[static_cast<size_t>(count++)] = {spawn_ray(hit, s.wi), branch.depth + 1, branch_weight,
+                                                  throughput * lobe_weight};
         };
         const bool two_lobes = !material.random_delta_direction() && first && second && first->delta &&
                                second->delta && first->wi != second->wi;
@@ -58,8 +82,12 @@ Rgb WhittedIntegrator::trace(const Scene& scene, const Ray& ray, int depth, doub
                 follow(*s, s->f * (std::abs(dot(hit.shading_normal, s->wi)) / s->pdf));
             }
         }
+        // Pushed in reverse, so that the first branch and all it leads to are traced first.
+        for (int i = count - 1; i >= 0; --i) {
+            pending.push_back(next[static_cast<size_t>(i)]);
+        }
     }
-    return radiance * segment_transmittance(material, hit, ray);
+    return radiance;
 }
 
 }  // namespace glint

@@ -23,10 +23,6 @@ class WhittedIntegrator final : public Integrator {
   private:
     static constexpr double kMinBranchWeight = 1e-4;
 
-    // `weight`: the largest channel of the product of the lobe weights from the camera to here.
-    Rgb trace(const Scene& scene, const Ray& ray, int depth, double weight, SampleStream& samples,
-              RayCounters& rays) const;
-
     int max_depth_;
 };
 

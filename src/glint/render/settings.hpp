@@ -5,6 +5,18 @@
 
 namespace glint {
 
+// Upper bounds of the render settings, checked by the scene builder for the file and the command line
+// alike (docs/scene-format.md, "Limits"), each with the reason in its message:
+// - a side of at most 32768 pixels and at most 2^27 pixels in all (16384 × 8192): the film holds 32
+//   bytes a pixel, so the largest film is 4 GiB;
+// - at most 2^20 samples per pixel: sample indices and the samplers' tables stay within 32 bits;
+// - at most 1024 bounces: beyond that even a white mirror room's paths carry less than any float
+//   difference, and Whitted's stack of pending branches stays small.
+inline constexpr int kMaxFilmSide = 1 << 15;
+inline constexpr std::int64_t kMaxFilmPixels = std::int64_t{1} << 27;
+inline constexpr std::uint32_t kMaxSamplesPerPixel = 1u << 20;
+inline constexpr int kMaxPathDepth = 1024;
+
 // How to render: the scene's `render:` block with the command line's overrides applied.
 struct RenderSettings {
     int width = 640;

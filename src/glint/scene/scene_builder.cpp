@@ -1,6 +1,7 @@
 // SceneDesc → Scene: reads every object through Params and the name → constructor tables, so that
 // each mistake is reported at its position before anything is rendered.
 #include <map>
+#include <optional>
 
 #include "glint/geometry/instance.hpp"
 #include "glint/integrator/integrator.hpp"
@@ -39,61 +40,92 @@ std::vector<std::string> accelerator_names() {
 // An object without a material is grey matte of this albedo.
 constexpr double kDefaultAlbedo = 0.8;
 
-constexpr std::int64_t kMaxImageSide = 1 << 15;
+// The limits of render settings, with the reason a user needs to understand them (settings.hpp).
+std::string depth_limit_message(const std::string& what) {
+    return what + " is more than " + std::to_string(kMaxPathDepth) +
+           " bounces (paths that long carry no visible light, and every bounce costs time)";
+}
+std::string side_limit_message(const std::string& what) {
+    return what + " is larger than " + std::to_string(kMaxFilmSide) + " pixels";
+}
+std::string samples_limit_message(const std::string& what) {
+    return what + " is more than " + std::to_string(kMaxSamplesPerPixel) + " per pixel";
+}
 
 RenderSettings read_render_settings(const Node* node, const RenderOverrides& overrides) {
     RenderSettings s;
     SourcePos where;
+    std::optional<Params> p;
     if (node) {
-        Params p(*node, "render");
-        where = p.pos();
+        p.emplace(*node, "render");
+        where = p->pos();
         const auto side = [&](const std::string& key, int fallback) {
-            const std::int64_t v = p.positive_integer(key, fallback);
-            if (v > kMaxImageSide) {
-                p.fail(key, "render." + key + " is larger than " + std::to_string(kMaxImageSide) + " pixels");
+            const std::int64_t v = p->positive_integer(key, fallback);
+            if (v > kMaxFilmSide) {
+                p->fail(key, side_limit_message("render." + key));
             }
             return static_cast<int>(v);
         };
         s.width = side("width", s.width);
         s.height = side("height", s.height);
-        const std::int64_t spp = p.positive_integer("samples", s.samples_per_pixel);
-        if (spp > (1 << 20)) {
-            p.fail("samples", "render.samples is more than 1048576 per pixel");
+        const std::int64_t spp = p->positive_integer("samples", s.samples_per_pixel);
+        if (spp > kMaxSamplesPerPixel) {
+            p->fail("samples", samples_limit_message("render.samples"));
         }
         s.samples_per_pixel = static_cast<std::uint32_t>(spp);
-        if (p.has("sampler")) {
-            s.sampler = check_name(p.string("sampler"), sampler_names(), "sampler", p.pos_of("sampler"));
+        if (p->has("sampler")) {
+            s.sampler = check_name(p->string("sampler"), sampler_names(), "sampler", p->pos_of("sampler"));
         }
-        if (p.has("integrator")) {
-            s.integrator =
-                check_name(p.string("integrator"), integrator_names(), "integrator", p.pos_of("integrator"));
+        if (p->has("integrator")) {
+            s.integrator = check_name(p->string("integrator"), integrator_names(), "integrator",
+                                      p->pos_of("integrator"));
         }
-        if (p.has("accelerator")) {
-            s.accelerator = check_name(p.string("accelerator"), accelerator_names(), "accelerator",
-                                       p.pos_of("accelerator"));
+        if (p->has("accelerator")) {
+            s.accelerator = check_name(p->string("accelerator"), accelerator_names(), "accelerator",
+                                       p->pos_of("accelerator"));
         }
-        s.max_depth = static_cast<int>(p.positive_integer("max_depth", s.max_depth));
-        const std::int64_t seed = p.integer("seed", static_cast<std::int64_t>(s.seed));
+        const std::int64_t depth = p->positive_integer("max_depth", s.max_depth);
+        if (depth > kMaxPathDepth) {
+            p->fail("max_depth", depth_limit_message("render.max_depth"));
+        }
+        s.max_depth = static_cast<int>(depth);
+        const std::int64_t seed = p->integer("seed", static_cast<std::int64_t>(s.seed));
         if (seed < 0) {
-            p.fail("seed", "render.seed must be zero or more");
+            p->fail("seed", "render.seed must be zero or more");
         }
         s.seed = static_cast<std::uint64_t>(seed);
-        p.finish();
+        p->finish();
     }
-    // Command-line values are checked by the command line; names are checked here, against the tables.
-    if (overrides.width)
+    // Command-line values are checked again here, so that every caller of the library (the preview,
+    // a fuzzer, a program) meets the same limits as the command line.
+    const SourcePos command_line{SourceFile::from_text("command line", ""), 0, 0};
+    const auto check = [&](bool ok, const std::string& message) {
+        if (!ok) {
+            throw SceneError(command_line, message);
+        }
+    };
+    if (overrides.width) {
+        check(*overrides.width >= 1 && *overrides.width <= kMaxFilmSide, side_limit_message("--width"));
         s.width = *overrides.width;
-    if (overrides.height)
+    }
+    if (overrides.height) {
+        check(*overrides.height >= 1 && *overrides.height <= kMaxFilmSide, side_limit_message("--height"));
         s.height = *overrides.height;
-    if (overrides.samples_per_pixel)
+    }
+    if (overrides.samples_per_pixel) {
+        check(*overrides.samples_per_pixel >= 1 && *overrides.samples_per_pixel <= kMaxSamplesPerPixel,
+              samples_limit_message("--spp"));
         s.samples_per_pixel = *overrides.samples_per_pixel;
+    }
     if (overrides.seed)
         s.seed = *overrides.seed;
     if (overrides.threads)
         s.threads = *overrides.threads;
-    if (overrides.max_depth)
+    if (overrides.max_depth) {
+        check(*overrides.max_depth >= 1 && *overrides.max_depth <= kMaxPathDepth,
+              depth_limit_message("--max-depth"));
         s.max_depth = *overrides.max_depth;
-    const SourcePos command_line{SourceFile::from_text("command line", ""), 0, 0};
+    }
     if (overrides.sampler)
         s.sampler = check_name(*overrides.sampler, sampler_names(), "sampler", command_line);
     if (overrides.integrator) {
@@ -101,6 +133,16 @@ RenderSettings read_render_settings(const Node* node, const RenderOverrides& ove
     }
     if (overrides.accelerator) {
         s.accelerator = check_name(*overrides.accelerator, accelerator_names(), "accelerator", command_line);
+    }
+    // Both sides may be within their limit and the whole still too large for memory.
+    if (static_cast<std::int64_t>(s.width) * s.height > kMaxFilmPixels) {
+        const std::string message =
+            "the image is " + std::to_string(s.width) + "x" + std::to_string(s.height) + ", more than " +
+            std::to_string(kMaxFilmPixels) + " pixels (16384x8192): the film would need more than 4 GiB";
+        if (node && !overrides.width && !overrides.height) {
+            throw SceneError(where, "render: " + message);
+        }
+        throw SceneError(command_line, message);
     }
     return s;
 }
