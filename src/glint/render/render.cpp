@@ -129,10 +129,15 @@ RenderStats render(const Scene& scene, Film& film, const RenderCallbacks& callba
             }
         });
         first_sample += pass;
-        if (callbacks.cancel && callbacks.cancel->load()) {
+        const bool last = first_sample == stats.samples_per_pixel;
+        if (!last && ((callbacks.cancel && callbacks.cancel->load()) ||
+                      (callbacks.stop_after_pass && callbacks.stop_after_pass->load()))) {
             stats.cancelled = true;
             break;
         }
+    }
+    if (stats.cancelled && !(callbacks.cancel && callbacks.cancel->load())) {
+        stats.samples_per_pixel = first_sample;  // a whole number of passes: every pixel has these
     }
     stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     for (const TileResult& r : results) {

@@ -20,7 +20,7 @@ struct RenderStats {
     std::uint64_t nonfinite_samples = 0;  // NaN or infinite radiance: counted, left out of the film
     int first_nonfinite_x = -1, first_nonfinite_y = -1;
     std::uint32_t first_nonfinite_sample = 0;
-    bool cancelled = false;
+    bool cancelled = false;  // stopped by `cancel` or `stop_after_pass` before all samples were taken
 
     double mrays_per_second() const { return seconds > 0 ? rays.total() / seconds * 1e-6 : 0; }
 };
@@ -28,8 +28,11 @@ struct RenderStats {
 struct RenderCallbacks {
     // Called now and then with the fraction done in [0, 1], from one thread at a time.
     std::function<void(double fraction)> progress;
-    // When set and true, the render stops at the next tile.
+    // When set and true, the render stops at the next tile (pixels may then differ in sample count).
     const std::atomic<bool>* cancel = nullptr;
+    // When set and true, the render stops at the end of the current pass, so that every pixel has the
+    // same number of samples (RenderStats::samples_per_pixel): what Ctrl-C asks for.
+    const std::atomic<bool>* stop_after_pass = nullptr;
 };
 
 // Renders scene.settings.samples_per_pixel samples into every pixel of `film` (which must have the
