@@ -7,6 +7,7 @@
 
 #include "commands.hpp"
 #include "glint/accel/bvh.hpp"
+#include "glint/geometry/instance.hpp"
 #include "glint/geometry/mesh.hpp"
 #include "glint/scene/scene.hpp"
 #include "glint/scene/scene_desc.hpp"
@@ -32,7 +33,12 @@ int run_info(const std::string& scene_path) {
     std::size_t meshes = 0, triangles = 0, vertices = 0, mesh_nodes = 0, mesh_bytes = 0;
     double mesh_build_seconds = 0;
     for (const auto& shape : scene.shapes) {
-        if (const auto* mesh = dynamic_cast<const glint::Mesh*>(shape.get())) {
+        // A mesh placed by a `transform` is a mesh inside an instance: it counts the same.
+        const glint::Shape* placed = shape.get();
+        while (const auto* instance = dynamic_cast<const glint::Instance*>(placed)) {
+            placed = &instance->shape();
+        }
+        if (const auto* mesh = dynamic_cast<const glint::Mesh*>(placed)) {
             ++meshes;
             triangles += mesh->triangles().size();
             vertices += mesh->positions().size();

@@ -21,6 +21,7 @@ class Instance final : public Shape {
     std::optional<ShapeSample> sample_area(Point2 u) const override;
 
     const Transform& transform() const { return to_world_; }
+    const Shape& shape() const { return *shape_; }  // the shape in its own space
 
   private:
     Ray to_object(const Ray& ray) const {
