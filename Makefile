@@ -32,8 +32,7 @@ format:
 	find src apps tests bench -name '*.cpp' -o -name '*.hpp' | xargs clang-format -i
 
 examples: build
-	mkdir -p build/examples
-	for f in examples/*.yaml; do ./build/release/glint render "$$f" -o build/examples/$$(basename "$$f" .yaml).png || exit 1; done
+	./scripts/render-examples.sh build/examples
 
 clean:
 	rm -rf build

@@ -2,19 +2,31 @@
 # Renders every scene of examples/ into docs/gallery/ (the pictures of docs/gallery.md), plus the
 # paper's fig. 8 series: the same scene at 1, 4, 16 and 64 samples per pixel, and random and regular
 # against jittered at 4. Run after `make build`:  scripts/render-gallery.sh
-set -euo pipefail
+# A failure does not stop the others: the script goes on, lists what failed at the end and exits 1.
+set -uo pipefail
 cd "$(dirname "$0")/.."
 glint=./build/release/glint
 out=docs/gallery
 mkdir -p "$out"
+failed=()
+render() {  # render SCENE OUTPUT [FLAGS…]
+  local scene=$1 image=$2
+  shift 2
+  "$glint" render "$scene" --quiet -o "$image" "$@" || failed+=("$scene -> $image")
+}
 for scene in examples/*.yaml; do
   name=$(basename "$scene" .yaml)
   # 64 samples per pixel: enough for the path-traced scenes to read clearly, at the scenes' own sizes.
-  "$glint" render "$scene" --spp 64 --quiet -o "$out/$name.png"
+  render "$scene" "$out/$name.png" --spp 64
 done
 # The series' 64-spp jittered picture is the example's own render above (its sampler is jittered).
 for spp in 1 4 16; do
-  "$glint" render examples/fig08-sampling.yaml --spp "$spp" --sampler jittered --quiet -o "$out/fig08-$spp-jittered.png"
+  render examples/fig08-sampling.yaml "$out/fig08-$spp-jittered.png" --spp "$spp" --sampler jittered
 done
-"$glint" render examples/fig08-sampling.yaml --spp 4 --sampler random --quiet -o "$out/fig08-4-random.png"
-"$glint" render examples/fig08-sampling.yaml --spp 4 --sampler regular --quiet -o "$out/fig08-4-regular.png"
+render examples/fig08-sampling.yaml "$out/fig08-4-random.png" --spp 4 --sampler random
+render examples/fig08-sampling.yaml "$out/fig08-4-regular.png" --spp 4 --sampler regular
+if [ ${#failed[@]} -gt 0 ]; then
+  printf 'render-gallery: failed: %s\n' "${failed[@]}" >&2
+  exit 1
+fi
+echo "render-gallery: every picture rendered into $out/"
