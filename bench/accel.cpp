@@ -6,6 +6,11 @@
 // octahedra, whose triangles are roughly uniform, no slivers at the poles). Ratios are printed at the end of
 // the run, from the medians when the runs are repeated:
 //   ./build/release/bench/glint_bench_accel [--benchmark_repetitions=3]
+//
+// The bunny and the dragon are optional data (not in the repository): they are read from
+// $GLINT_DATA_DIR/meshes, else from the shared/data folder beside the repository. When they are not
+// there, generated meshes of similar size stand in, under their own names (blob82k, blob1.3M: a bumpy
+// closed surface, the second subdivided twice like the dragon), and a note says so.
 #include <benchmark/benchmark.h>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -13,6 +18,8 @@
 
 #include <cassert>
 #include <cstdio>
+#include <cstdlib>
+#include <functional>
 #include <map>
 #include <optional>
 #include <random>
@@ -110,6 +117,74 @@ MeshData tessellated_sphere(int subdivisions) {
     return mesh;
 }
 
+// A bumpy closed surface, the bunny's stand-in: a subdivided icosahedron (20 · 4^s triangles, vertices
+// shared) whose radius is displaced by sine waves, so that it is not convex and shadows itself.
+MeshData bumpy_blob(int subdivisions) {
+    MeshData mesh;
+    const double g = (1 + std::sqrt(5.0)) / 2;
+    mesh.positions = {{-1, g, 0},  {1, g, 0},  {-1, -g, 0}, {1, -g, 0}, {0, -1, g},  {0, 1, g},
+                      {0, -1, -g}, {0, 1, -g}, {g, 0, -1},  {g, 0, 1},  {-g, 0, -1}, {-g, 0, 1}};
+    mesh.triangles = {{0, 11, 5},  {0, 5, 1},  {0, 1, 7},  {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+                      {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
+                      {3, 8, 9},   {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
+    for (int s = 0; s < subdivisions; ++s) {
+        mesh = subdivide(mesh);
+        for (Vec3& p : mesh.positions) {
+            p = normalize(p);
+        }
+    }
+    for (Vec3& p : mesh.positions) {
+        const double r = 1 + 0.20 * std::sin(5 * p.x + 1) * std::sin(4 * p.y) +
+                         0.12 * std::sin(9 * p.z + 2 * p.x) + 0.06 * std::sin(15 * p.y + 7 * p.z + 0.5);
+        p = Vec3{0.08 * r * p.x, 0.068 * r * p.y, 0.056 * r * p.z};
+    }
+    return mesh;
+}
+
+// The optional meshes: $GLINT_DATA_DIR/meshes, else shared/data/meshes beside the repository.
+std::filesystem::path data_dir() {
+    const char* from_environment = std::getenv("GLINT_DATA_DIR");
+    return from_environment != nullptr && *from_environment != '\0'
+               ? std::filesystem::path(from_environment)
+               : std::filesystem::path(GLINT_SHARED_DIR) / "data";
+}
+
+// A mesh the races use: a Stanford model when its file is there, else a generated one of similar size.
+struct MeshSource {
+    std::string name;  // in the benchmarks' names
+    std::function<MeshData()> make;
+    std::string note;  // what stands in for what, when the file is missing
+};
+
+MeshSource mesh_source(const std::string& file, const std::string& name,
+                       std::function<MeshData(MeshData)> finish, const std::string& stand_in_name,
+                       int stand_in_subdivisions) {
+    const std::filesystem::path path = data_dir() / "meshes" / file;
+    std::error_code error;
+    if (std::filesystem::is_regular_file(path, error)) {
+        return {name, [path, finish] { return finish(load_mesh_file(path)); }, ""};
+    }
+    return {stand_in_name,
+            [finish, stand_in_subdivisions] { return finish(bumpy_blob(stand_in_subdivisions)); },
+            "note: " + path.string() + " is absent (set GLINT_DATA_DIR to a folder with meshes/): '" +
+                stand_in_name + "', a generated mesh of similar size, stands in for '" + name + "'"};
+}
+
+// The bunny (69 451 triangles) or a 81 920-triangle blob.
+const MeshSource& small_mesh() {
+    static const MeshSource source = mesh_source(
+        "stanford-bunny.obj", "bunny", [](MeshData m) { return m; }, "blob82k", 6);
+    return source;
+}
+
+// The dragon subdivided twice (1.6 M triangles), or the blob subdivided twice (1.3 M).
+const MeshSource& large_mesh() {
+    static const MeshSource source = mesh_source(
+        "dragon_100k_vcg.ply", "dragon1.6M", [](MeshData m) { return subdivide(subdivide(m)); }, "blob1.3M",
+        6);
+    return source;
+}
+
 void make_rays(BenchScene& scene) {
     const Bounds3 box = scene.bvh->bounds();
     const Vec3 center = box.center();
@@ -168,10 +243,8 @@ std::unique_ptr<BenchScene> finish(std::unique_ptr<BenchScene> scene, bool with_
     return scene;
 }
 
-const std::filesystem::path kMeshes = std::filesystem::path(GLINT_SHARED_DIR) / "data/meshes";
-
-const MeshData& dragon_1m6() {
-    static const MeshData mesh = subdivide(subdivide(load_mesh_file(kMeshes / "dragon_100k_vcg.ply")));
+const MeshData& large_mesh_data() {
+    static const MeshData mesh = large_mesh().make();
     return mesh;
 }
 
@@ -181,10 +254,10 @@ BenchScene& scene(const std::string& name) {
     if (!slot) {
         auto s = std::make_unique<BenchScene>();
         bool with_embree = true;
-        if (name == "bunny") {
-            s->shapes.push_back(std::make_unique<Mesh>(load_mesh_file(kMeshes / "stanford-bunny.obj")));
-        } else if (name == "dragon1.6M") {
-            s->shapes.push_back(std::make_unique<Mesh>(dragon_1m6()));
+        if (name == small_mesh().name) {
+            s->shapes.push_back(std::make_unique<Mesh>(small_mesh().make()));
+        } else if (name == large_mesh().name) {
+            s->shapes.push_back(std::make_unique<Mesh>(large_mesh_data()));
         } else if (name == "spheres100k") {
             std::mt19937_64 rng(3);
             std::uniform_real_distribution<double> u(0, 1);
@@ -246,8 +319,8 @@ void BM_Rays(benchmark::State& state, const std::string& scene_name, const std::
     state.counters["tris"] = static_cast<double>(s.triangles);
 }
 
-void BM_BuildDragon(benchmark::State& state) {
-    const MeshData& data = dragon_1m6();
+void BM_BuildLargeMesh(benchmark::State& state) {
+    const MeshData& data = large_mesh_data();
     double bytes_per_triangle = 0;
     for (auto _ : state) {
         // Timed: what a render does with a loaded mesh (moves it into a Mesh, which builds). Not timed:
@@ -271,13 +344,12 @@ void BM_BuildDragon(benchmark::State& state) {
 }
 
 void register_all() {
-    for (const char* name : {"bunny", "dragon1.6M", "spheres100k"}) {
+    for (const std::string& name : {small_mesh().name, large_mesh().name, std::string("spheres100k")}) {
         for (const char* kind : {"primary", "diffuse", "shadow"}) {
             for (bool embree : {false, true}) {
                 const std::string label =
                     std::string("Rays/") + name + "/" + kind + "/" + (embree ? "embree" : "bvh");
-                benchmark::RegisterBenchmark(label.c_str(), BM_Rays, std::string(name), std::string(kind),
-                                             embree)
+                benchmark::RegisterBenchmark(label.c_str(), BM_Rays, name, std::string(kind), embree)
                     ->UseRealTime()
                     ->Unit(benchmark::kMillisecond);
             }
@@ -289,7 +361,7 @@ void register_all() {
             ->UseRealTime()
             ->Unit(benchmark::kMillisecond);
     }
-    benchmark::RegisterBenchmark("Build/dragon1.6M", BM_BuildDragon)
+    benchmark::RegisterBenchmark(("Build/" + large_mesh().name).c_str(), BM_BuildLargeMesh)
         ->UseRealTime()
         ->Unit(benchmark::kMillisecond);
 }
@@ -327,6 +399,11 @@ void print_growth(const std::map<std::string, double>& rates, const std::string&
 
 int main(int argc, char** argv) {
     benchmark::Initialize(&argc, argv);
+    for (const MeshSource* source : {&small_mesh(), &large_mesh()}) {
+        if (!source->note.empty()) {
+            std::printf("%s\n", source->note.c_str());
+        }
+    }
     register_all();
     RatioReporter reporter;
     benchmark::RunSpecifiedBenchmarks(&reporter);

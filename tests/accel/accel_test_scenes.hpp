@@ -2,6 +2,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <memory>
 #include <random>
@@ -10,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "glint/accel/accelerator.hpp"
+#include "glint/core/math.hpp"
 #include "glint/geometry/mesh.hpp"
 #include "glint/geometry/sphere.hpp"
 
@@ -69,6 +71,80 @@ inline MeshData tessellated_sphere(int subdivisions, double radius = 1, const Ve
     }
     for (Vec3& p : mesh.positions) {
         p = center + radius * p;
+    }
+    return mesh;
+}
+
+// A mesh with the properties of the Stanford bunny that matter to a BVH, made by code so that every
+// clone can test with it: 81 920 triangles (the bunny has 69 451) sharing 40 962 vertices, closed, not
+// convex (a subdivided icosahedron whose radius is displaced by three sine waves: bumps and hollows that
+// shadow each other), bunny-sized (about 0.16 across) and off the origin. Every vertex moves along its
+// own direction from the centre, by a radius between 0.62 and 1.38, so the surface stays closed and
+// never meets itself.
+inline MeshData displaced_blob(int subdivisions = 6) {
+    MeshData mesh;
+    const double g = (1 + std::sqrt(5.0)) / 2;  // the icosahedron's vertices: (0, ±1, ±g) cycled
+    mesh.positions = {{-1, g, 0},  {1, g, 0},  {-1, -g, 0}, {1, -g, 0}, {0, -1, g},  {0, 1, g},
+                      {0, -1, -g}, {0, 1, -g}, {g, 0, -1},  {g, 0, 1},  {-g, 0, -1}, {-g, 0, 1}};
+    for (Vec3& p : mesh.positions) {
+        p = normalize(p);
+    }
+    mesh.triangles = {{0, 11, 5},  {0, 5, 1},  {0, 1, 7},  {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+                      {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
+                      {3, 8, 9},   {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
+    for (int s = 0; s < subdivisions; ++s) {
+        std::vector<std::array<std::uint32_t, 3>> finer;
+        std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> midpoint;
+        auto mid = [&](std::uint32_t a, std::uint32_t b) {
+            const auto [it, inserted] =
+                midpoint.try_emplace(std::minmax(a, b), static_cast<std::uint32_t>(mesh.positions.size()));
+            if (inserted) {
+                mesh.positions.push_back(normalize(mesh.positions[a] + mesh.positions[b]));
+            }
+            return it->second;
+        };
+        for (const auto& t : mesh.triangles) {
+            const std::uint32_t ab = mid(t[0], t[1]), bc = mid(t[1], t[2]), ca = mid(t[2], t[0]);
+            finer.push_back({t[0], ab, ca});
+            finer.push_back({ab, t[1], bc});
+            finer.push_back({ca, bc, t[2]});
+            finer.push_back({ab, bc, ca});
+        }
+        mesh.triangles = std::move(finer);
+    }
+    const Vec3 scale{0.08, 0.068, 0.056};
+    const Vec3 offset{-0.017, 0.11, -0.002};
+    for (Vec3& p : mesh.positions) {
+        const double r = 1 + 0.20 * std::sin(5 * p.x + 1) * std::sin(4 * p.y) +
+                         0.12 * std::sin(9 * p.z + 2 * p.x) + 0.06 * std::sin(15 * p.y + 7 * p.z + 0.5);
+        p = offset + Vec3{scale.x * r * p.x, scale.y * r * p.y, scale.z * r * p.z};
+    }
+    return mesh;
+}
+
+// A closed torus of exactly 2 · around · across triangles (a grid of quads that wraps both ways, its
+// vertices shared), its tube's radius rippled so that it is bumpy as well as not convex; built in
+// linear time, for meshes of millions of triangles.
+inline MeshData displaced_torus(std::uint32_t around, std::uint32_t across) {
+    MeshData mesh;
+    mesh.positions.reserve(std::size_t{around} * across);
+    for (std::uint32_t i = 0; i < around; ++i) {
+        const double u = 2 * kPi * i / around;
+        for (std::uint32_t j = 0; j < across; ++j) {
+            const double v = 2 * kPi * j / across;
+            const double tube =
+                0.35 * (1 + 0.2 * std::sin(7 * u) * std::sin(3 * v) + 0.05 * std::sin(40 * u + 9 * v));
+            const double ring = 1 + tube * std::cos(v);
+            mesh.positions.push_back({ring * std::cos(u), tube * std::sin(v), ring * std::sin(u)});
+        }
+    }
+    const auto vertex = [&](std::uint32_t i, std::uint32_t j) { return (i % around) * across + j % across; };
+    mesh.triangles.reserve(2 * std::size_t{around} * across);
+    for (std::uint32_t i = 0; i < around; ++i) {
+        for (std::uint32_t j = 0; j < across; ++j) {
+            mesh.triangles.push_back({vertex(i, j), vertex(i, j + 1), vertex(i + 1, j + 1)});
+            mesh.triangles.push_back({vertex(i, j), vertex(i + 1, j + 1), vertex(i + 1, j)});
+        }
     }
     return mesh;
 }

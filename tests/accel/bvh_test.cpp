@@ -1,12 +1,17 @@
 // The BVH must give the hits the brute-force list gives: same primitive, same t, for thousands of rays,
 // and no ray may slip through a closed mesh at a shared edge or vertex.
 #include <gtest/gtest.h>
+#include <tbb/parallel_for.h>
+
+#include <chrono>
+#include <fstream>
 
 #include "accel/accel_test_scenes.hpp"
 #include "glint/accel/bvh.hpp"
 #include "glint/accel/linear.hpp"
 #include "glint/geometry/mesh_io/mesh_data.hpp"
 #include "glint/geometry/plane.hpp"
+#include "glint/geometry/rectangle.hpp"
 #include "glint/geometry/triangle.hpp"
 #include "test_data.hpp"
 
@@ -86,6 +91,16 @@ const Mesh& bunny(const std::filesystem::path& file) {
     return mesh;
 }
 
+// The bunny's stand-in that every clone has (accel_test_scenes.hpp): 81 920 triangles, closed, bumpy.
+const MeshData& blob_data() {
+    static const MeshData data = test::displaced_blob();
+    return data;
+}
+const Mesh& blob() {
+    static const Mesh mesh(blob_data());
+    return mesh;
+}
+
 // Checks the mesh's nearest hits and any-hit answers on `rays` against brute_force; returns how many hit.
 int expect_brute_force_hits(const Mesh& mesh, const std::vector<Ray>& rays) {
     int hits = 0;
@@ -105,18 +120,9 @@ int expect_brute_force_hits(const Mesh& mesh, const std::vector<Ray>& rays) {
     return hits;
 }
 
-TEST(Bvh, BunnyMeshGivesTheBruteForceHits) {
-    GLINT_REQUIRE_DATA_FILE(bunny_file, "meshes/stanford-bunny.obj");
-    const Mesh& mesh = bunny(bunny_file);
-    ASSERT_EQ(mesh.triangles().size(), 69451u);  // the file's header says 69451 faces
-    EXPECT_GT(expect_brute_force_hits(mesh, rays_into(mesh.bounds(), 150, 3)), 25);
-}
-
 // Rays that start on the surface, as shadow and bounce rays do: the any-hit traversal visits children
 // in node order, not nearest first, and must still find an occluder whenever there is one.
-TEST(Bvh, RaysLeavingTheBunnysSurfaceGiveTheBruteForceAnswers) {
-    GLINT_REQUIRE_DATA_FILE(bunny_file, "meshes/stanford-bunny.obj");
-    const Mesh& mesh = bunny(bunny_file);
+void expect_brute_force_answers_from_the_surface(const Mesh& mesh) {
     const auto rays = test::surface_rays(
         mesh.bounds(), 400, 23, [&](const Ray& ray, Hit& hit) { return mesh.intersect(ray, kInf, hit); });
     int occluded = 0;
@@ -134,9 +140,9 @@ TEST(Bvh, RaysLeavingTheBunnysSurfaceGiveTheBruteForceAnswers) {
     EXPECT_GT(bounced, 20);
 }
 
-TEST(Bvh, BunnyHitsDoNotDependOnTheScale) {
-    GLINT_REQUIRE_DATA_FILE(bunny_file, "meshes/stanford-bunny.obj");
-    const MeshData original = load_mesh_file(bunny_file);
+// The same rays, scaled with the mesh, hit the same triangles at the scaled t: nothing in the BVH or
+// the triangle test depends on the size of the coordinates.
+void expect_hits_independent_of_the_scale(const MeshData& original) {
     const Mesh unit(original);
     for (double scale : {0.1, 1000.0}) {
         MeshData scaled = original;
@@ -144,16 +150,93 @@ TEST(Bvh, BunnyHitsDoNotDependOnTheScale) {
             p *= scale;
         }
         const Mesh mesh(std::move(scaled));
+        int hits = 0;
         for (const Ray& ray : rays_into(unit.bounds(), 500, 17)) {
             Hit a, b;
             const bool found = unit.intersect(ray, kInf, a);
             ASSERT_EQ(mesh.intersect({ray.origin * scale, ray.direction}, kInf, b), found);
             if (found) {
+                ++hits;
                 EXPECT_EQ(a.element, b.element);
                 EXPECT_NEAR(a.t * scale, b.t, 1e-9 * b.t);
             }
         }
+        EXPECT_GT(hits, 100);
     }
+}
+
+TEST(Bvh, GeneratedBlobIsLikeTheBunny) {
+    const Mesh& mesh = blob();
+    EXPECT_EQ(mesh.triangles().size(), 81920u);
+    EXPECT_EQ(mesh.positions().size(), 40962u);  // shared: V = T / 2 + 2 for a closed genus-0 surface
+    const Vec3 size = mesh.bounds().extent();
+    EXPECT_GT(size.x, 0.1);
+    EXPECT_LT(size.x, 0.25);
+}
+
+TEST(Bvh, GeneratedBlobGivesTheBruteForceHits) {
+    EXPECT_GT(expect_brute_force_hits(blob(), rays_into(blob().bounds(), 150, 3)), 25);
+}
+
+TEST(Bvh, RaysLeavingTheGeneratedBlobsSurfaceGiveTheBruteForceAnswers) {
+    expect_brute_force_answers_from_the_surface(blob());
+}
+
+TEST(Bvh, GeneratedBlobHitsDoNotDependOnTheScale) {
+    expect_hits_independent_of_the_scale(blob_data());
+}
+
+// The same three on the Stanford bunny, when the optional data is there (test_data.hpp).
+TEST(Bvh, BunnyMeshGivesTheBruteForceHits) {
+    GLINT_REQUIRE_DATA_FILE(bunny_file, "meshes/stanford-bunny.obj");
+    const Mesh& mesh = bunny(bunny_file);
+    ASSERT_EQ(mesh.triangles().size(), 69451u);  // the file's header says 69451 faces
+    EXPECT_GT(expect_brute_force_hits(mesh, rays_into(mesh.bounds(), 150, 3)), 25);
+}
+
+TEST(Bvh, RaysLeavingTheBunnysSurfaceGiveTheBruteForceAnswers) {
+    GLINT_REQUIRE_DATA_FILE(bunny_file, "meshes/stanford-bunny.obj");
+    expect_brute_force_answers_from_the_surface(bunny(bunny_file));
+}
+
+TEST(Bvh, BunnyHitsDoNotDependOnTheScale) {
+    GLINT_REQUIRE_DATA_FILE(bunny_file, "meshes/stanford-bunny.obj");
+    expect_hits_independent_of_the_scale(load_mesh_file(bunny_file));
+}
+
+// A mesh of over a million triangles: the BVH's hits are the brute force's. The brute force runs over
+// every triangle for each ray, so the rays are few, and tested in parallel.
+TEST(Bvh, AMillionTriangleMeshGivesTheBruteForceHits) {
+#if defined(__SANITIZE_ADDRESS__)
+    // Under AddressSanitizer a quarter of the size (262 144 triangles): the brute force is ~10x slower.
+    constexpr std::uint32_t kAround = 512, kAcross = 256;
+#else
+    constexpr std::uint32_t kAround = 1024, kAcross = 512;  // 1 048 576 triangles
+#endif
+    const Mesh mesh(test::displaced_torus(kAround, kAcross));
+    ASSERT_EQ(mesh.triangles().size(), 2u * kAround * kAcross);
+    const std::vector<Ray> rays = rays_into(mesh.bounds(), 96, 41);
+    struct Reference {
+        bool found = false;
+        TriangleHit hit;
+        std::uint32_t element = 0;
+    };
+    std::vector<Reference> reference(rays.size());
+    tbb::parallel_for(std::size_t{0}, rays.size(), [&](std::size_t i) {
+        reference[i].found = brute_force(mesh, rays[i], reference[i].hit, reference[i].element);
+    });
+    int hits = 0;
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+        Hit hit;
+        ASSERT_EQ(mesh.intersect(rays[i], kInf, hit), reference[i].found) << i;
+        EXPECT_EQ(mesh.occluded(rays[i], kInf), reference[i].found) << i;
+        if (reference[i].found) {
+            ++hits;
+            EXPECT_EQ(hit.element, reference[i].element);
+            EXPECT_EQ(hit.t, reference[i].hit.t);
+        }
+    }
+    EXPECT_GT(hits, 30);  // a torus: about half the rays aimed into its box hit it
 }
 
 // Rays aimed exactly at vertices and at points of edges of a closed mesh, from outside, must all hit
@@ -256,6 +339,165 @@ TEST(Bvh, ScalarTraversalGivesTheSameHitsAsAvx2) {
     WideBvh::force_scalar_traversal(false);
     EXPECT_EQ(WideBvh::uses_avx2(), WideBvh::cpu_has_avx2());
     expect_same_hits(list, bvh, rays_into(Bounds3{{-10, -10, -10}, {10, 10, 10}}, 2000, 6), ptrs);
+}
+
+// Axis-aligned rays (a zero direction component: its inverse is a large stand-in) onto meshes and
+// spheres far from the origin. Coordinate times stand-in overflowed float beyond 3.4e8, and the AVX2
+// path (fused multiply-subtract) then culled boxes the ray was inside: these rays all missed.
+TEST(Bvh, AxisAlignedRaysHitShapesFarFromTheOrigin) {
+    for (const bool scalar : {false, true}) {
+        WideBvh::force_scalar_traversal(scalar);
+        for (double scale : {1.0, 1e9, 1e17, 1e25}) {
+            const Vec3 center{-10 * scale, scale, 3 * scale};
+            const Mesh mesh(test::tessellated_sphere(2, scale, center));
+            std::vector<std::unique_ptr<Shape>> spheres;
+            for (int i = 0; i < 20; ++i) {
+                spheres.push_back(
+                    std::make_unique<Sphere>(Vec3{scale * (3 * i + 10), scale, 3 * scale}, scale));
+            }
+            const auto ptrs = pointers(spheres);
+            const BvhAccelerator bvh(ptrs);
+            int rays = 0;
+            for (const Vec3& vertex : mesh.positions()) {
+                // Straight down through each vertex, and along x and z through it from outside.
+                for (const Ray& ray : {Ray{vertex + Vec3{0, 5 * scale, 0}, {0, -1, 0}},
+                                       Ray{vertex + Vec3{5 * scale, 0, 0}, {-1, 0, 0}},
+                                       Ray{vertex - Vec3{0, 0, 5 * scale}, {0, 0, 1}}}) {
+                    TriangleHit reference;
+                    std::uint32_t element = 0;
+                    ASSERT_TRUE(brute_force(mesh, ray, reference, element));
+                    Hit hit;
+                    ASSERT_TRUE(mesh.intersect(ray, kInf, hit))
+                        << scale << " " << ray.origin << (scalar ? " scalar" : "");
+                    // Through a vertex: the triangles around it give the same t up to rounding.
+                    EXPECT_NEAR(hit.t, reference.t, 1e-14 * reference.t);
+                    ++rays;
+                }
+            }
+            EXPECT_EQ(rays, 3 * static_cast<int>(mesh.positions().size()));
+            for (int i = 0; i < 20; ++i) {
+                Hit hit;
+                const Ray ray{{scale * (3 * i + 10), 5 * scale, 3 * scale}, {0, -1, 0}};
+                ASSERT_TRUE(bvh.intersect(ray, kInf, hit)) << scale << " " << i << (scalar ? " scalar" : "");
+                EXPECT_EQ(hit.primitive, static_cast<std::uint32_t>(i));
+                EXPECT_NEAR(hit.t, 3 * scale, 1e-12 * scale);
+            }
+        }
+    }
+    WideBvh::force_scalar_traversal(false);
+}
+
+// ---- hostile coordinates: the build always ends, and the hits stay the brute force's -----------------
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// A flat grid of triangles (z = 0) with one more triangle reaching out to x = 1e40, a finite double
+// that float cannot hold. Its box saturates to infinity in float, and with the grid's zero thickness
+// the SAH's area was inf · 0 = NaN: the build used to recurse until the stack overflowed.
+TEST(Bvh, AMeshWithAVertexBeyondFloatRangeBuildsAndGivesTheBruteForceHits) {
+    MeshData data;
+    constexpr int kCells = 60;
+    for (int j = 0; j <= kCells; ++j) {
+        for (int i = 0; i <= kCells; ++i) {
+            data.positions.push_back({static_cast<double>(i) / kCells, static_cast<double>(j) / kCells, 0});
+        }
+    }
+    const auto at = [](int i, int j) { return static_cast<std::uint32_t>(j * (kCells + 1) + i); };
+    for (int j = 0; j < kCells; ++j) {
+        for (int i = 0; i < kCells; ++i) {
+            data.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+            data.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+        }
+    }
+    data.positions.push_back({1e40, 0.5, 0});
+    data.triangles.push_back(
+        {at(kCells, 0), static_cast<std::uint32_t>(data.positions.size() - 1), at(kCells, kCells)});
+    const auto start = std::chrono::steady_clock::now();
+    const Mesh mesh(data);
+    EXPECT_LT(seconds_since(start), 1.0);
+    EXPECT_EQ(mesh.triangles().size(), 2u * kCells * kCells + 1);
+    // Straight down onto the grid and beside it (x in [1, 1.5]: the far triangle, which is ~1e40 long).
+    std::mt19937_64 rng(3);
+    std::vector<Ray> rays;
+    for (int i = 0; i < 300; ++i) {
+        rays.push_back({random_in_box(rng, {-0.2, -0.2, 1}, {1.5, 1.2, 2}), {0, 0, -1}});
+        rays.push_back({random_in_box(rng, {-0.2, -0.2, 1}, {1.5, 1.2, 2}), random_direction(rng)});
+    }
+    EXPECT_GT(expect_brute_force_hits(mesh, rays), 200);
+    Hit hit;
+    ASSERT_TRUE(mesh.intersect({{1e30, 0.5, 1}, {0, 0, -1}}, kInf, hit));  // far out on the long triangle
+    EXPECT_EQ(hit.t, 1);
+    const auto& far = mesh.triangles()[hit.element];
+    EXPECT_TRUE(
+        std::any_of(far.begin(), far.end(), [&](std::uint32_t v) { return mesh.positions()[v].x == 1e40; }));
+}
+
+// The most primitives in a leaf of the tree.
+std::uint32_t largest_leaf(const WideBvh& bvh) {
+    std::uint32_t largest = 0;
+    for (const WideBvhNode& node : bvh.nodes()) {
+        largest = std::max(largest, *std::max_element(node.count, node.count + WideBvhNode::kWidth));
+    }
+    return largest;
+}
+
+// Scene shapes beyond float's range among ordinary ones. A floor of flat tiles (y = 0), one of which
+// reaches out to x = 1e40: the floor's box, infinite in x and of zero thickness, had the SAH area
+// inf · 0 = NaN, and the build recursed until the stack overflowed. Spheres with a sphere at x = 1e40:
+// every SAH cost was infinite, and all the shapes ended in one leaf, tested by every ray. The same with
+// a sphere of radius 1e300 around everything. Each must build at once, sort the ordinary shapes into
+// small leaves, and give the list's hits.
+TEST(Bvh, ShapesBeyondFloatRangeAmongOthersGiveTheListsHits) {
+    for (const std::string scene : {"floor", "far sphere", "far and huge spheres"}) {
+        std::vector<std::unique_ptr<Shape>> shapes;
+        std::uint32_t far_shape = 0;  // the index of the shape at 1e40
+        if (scene == "floor") {
+            for (int i = 0; i < 24; ++i) {
+                shapes.push_back(std::make_unique<Rectangle>(
+                    Vec3{-10.0 + 5 * (i % 4), 0, -10.0 + 3 * (i / 4)}, Vec3{0, 0, 2}, Vec3{4, 0, 0}));
+            }
+            far_shape = static_cast<std::uint32_t>(shapes.size());
+            shapes.push_back(std::make_unique<Rectangle>(Vec3{10, 0, -1}, Vec3{0, 0, 2}, Vec3{1e40, 0, 0}));
+        } else {
+            shapes = test::random_spheres(300, 13);
+            far_shape = static_cast<std::uint32_t>(shapes.size());
+            shapes.push_back(std::make_unique<Sphere>(Vec3{1e40, 0, 0}, 1));
+            if (scene == "far and huge spheres") {
+                shapes.push_back(std::make_unique<Sphere>(Vec3{0, 0, 0}, 1e300));
+            }
+        }
+        const auto ptrs = pointers(shapes);
+        const auto start = std::chrono::steady_clock::now();
+        const BvhAccelerator bvh(ptrs);
+        EXPECT_LT(seconds_since(start), 1.0) << scene;
+        EXPECT_LE(largest_leaf(bvh.bvh()), 4u) << scene;  // BvhBuildOptions::max_leaf_size
+        const LinearAccelerator list(ptrs);
+        expect_same_hits(list, bvh, rays_into(Bounds3{{-10, -1, -10}, {10, 1, 10}}, 2000, 14), ptrs);
+        // The far shape, from beside it, far out.
+        Hit hit;
+        const double far_x = scene == "floor" ? 5e39 : 1e40;
+        ASSERT_TRUE(bvh.intersect({{far_x, 5, 0}, {0, -1, 0}}, 1e20, hit)) << scene;
+        EXPECT_EQ(hit.primitive, far_shape) << scene;
+        EXPECT_EQ(hit.t, scene == "floor" ? 5 : 4) << scene;
+    }
+}
+
+// The BVH works in float: a mesh file must not hold a coordinate float cannot, and says where it is.
+TEST(Bvh, AMeshFileWithACoordinateBeyondFloatRangeIsAPositionedError) {
+    const auto path = std::filesystem::path(testing::TempDir()) / "far.obj";
+    std::ofstream(path) << "v 0 0 0\nv 1 0 0\nv 0 1e40 0\nf 1 2 3\n";
+    const auto start = std::chrono::steady_clock::now();
+    try {
+        load_mesh_file(path);
+        FAIL() << "no error";
+    } catch (const SceneError& e) {
+        EXPECT_LT(seconds_since(start), 1.0);
+        EXPECT_EQ(e.position().line, 3);
+        EXPECT_EQ(e.position().column, 5);
+        EXPECT_NE(std::string(e.what()).find("beyond float's range"), std::string::npos) << e.what();
+    }
 }
 
 }  // namespace

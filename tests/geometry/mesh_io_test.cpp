@@ -190,18 +190,26 @@ TEST(PlyLoader, MalformedFilesArePositionedErrors) {
     std::string bad_number = ascii_ply();
     bad_number.replace(bad_number.find("1 1 0 0 0 1 7"), 13, "1 x 0 0 0 1 7");
     expect_error_at("bad_number.ply", bad_number, face_line - 2, 3, "expected a number");
-    // Binary: truncated, and a list that claims more items than the file holds. The error names the
-    // byte offset and the element.
-    for (std::size_t cut : {std::size_t{40}, std::size_t{100}}) {
+    // Binary, truncated: short of what the header's counts need at the least (each vertex 37 bytes,
+    // each face and strip a count and an int), an error at the element's header line before anything is
+    // read; short only of what the lists then claim, an error naming the byte offset and the element.
+    struct Cut {
+        std::size_t bytes;
+        int line;  // 0: in the data
+        const char* words;
+    };
+    for (const Cut& cut : {Cut{10, 0, "at byte"}, Cut{40, 15, "element 'tristrips' declares 1 records"},
+                           Cut{100, 4, "element 'vertex' declares 4 records of at least 37 bytes"}}) {
         std::string truncated = binary_ply(false);
-        truncated.resize(truncated.size() - cut);
+        truncated.resize(truncated.size() - cut.bytes);
         const auto path = write_file("truncated.ply", truncated);
         try {
             load_ply(path);
             FAIL() << "no error";
         } catch (const SceneError& e) {
             EXPECT_EQ(e.position().file->path, path.string());
-            EXPECT_NE(std::string(e.what()).find("at byte"), std::string::npos) << e.what();
+            EXPECT_EQ(e.position().line, cut.line) << e.what();
+            EXPECT_NE(std::string(e.what()).find(cut.words), std::string::npos) << e.what();
         }
     }
     std::string huge_list = binary_ply(true);

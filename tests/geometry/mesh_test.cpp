@@ -2,6 +2,7 @@
 // points into the mesh file (or at the scene's `file:` when the file is missing).
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <fstream>
 
 #include "glint/geometry/mesh.hpp"
@@ -71,6 +72,24 @@ TEST(MeshShape, MissingOrBadFilesArePositionedErrors) {
         EXPECT_EQ(e.position().file->path, "s.yaml");
         EXPECT_NE(std::string(e.what()).find("non-zero area"), std::string::npos) << e.what();
     }
+}
+
+// A mesh file with a coordinate float cannot hold (the BVH's boxes are float): an error in the mesh
+// file at the number, within a second (such a vertex once made the BVH build recurse for ever).
+TEST(MeshShape, AVertexBeyondFloatRangeIsAnErrorAtItsNumber) {
+    const auto dir = scene_dir();
+    std::ofstream(dir / "models" / "far.obj") << "v -1 -1 0\nv 1 -1 0\nv 0 1 1e40\nf 1 2 3\n";
+    const auto start = std::chrono::steady_clock::now();
+    try {
+        build_scene(parse_scene_text(scene_with_mesh("models/far.obj"), "s.yaml", dir));
+        FAIL();
+    } catch (const SceneError& e) {
+        EXPECT_EQ(e.position().file->path, (dir / "models" / "far.obj").string());
+        EXPECT_EQ(e.position().line, 3);
+        EXPECT_EQ(e.position().column, 7);
+        EXPECT_NE(std::string(e.what()).find("beyond float's range"), std::string::npos) << e.what();
+    }
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 1.0);
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include "glint/accel/embree.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -100,11 +101,29 @@ RTCRay embree_ray(const Ray& ray, double t_max) {
     // Embree works in float: the origin alone is rounded by half a float ulp, so a ray leaving a surface
     // (offset only for double precision) could hit that surface again. Start it a few float ulps of
     // the origin's size along, in the ray's units. (The BVH needs no such start: it works in double.)
-    r.tnear = saturate_to_float(8 * 0x1p-24 * max_component(abs(ray.origin)) / length(ray.direction));
-    r.tfar = round_up_to_float(t_max);
+    const double origin_in_t = max_component(abs(ray.origin)) / length(ray.direction);
+    r.tnear = saturate_to_float(8 * 0x1p-24 * origin_in_t);
+    // The far end, by as much further: Embree's float t of a hit just before t_max can come out past it
+    // (by a few float ulps of the coordinates, divided by the cosine of the angle of incidence), and the
+    // hit would be culled before the filter sees it. Letting Embree look further is safe: the filters
+    // and the user-geometry callbacks test every candidate against the exact t_max, in double.
+    r.tfar = round_up_to_float(t_max + 0x1p-12 * (origin_in_t + t_max));
     r.mask = 0xffffffffu;
     r.flags = 0;
     return r;
+}
+
+// Whether Embree may trace the ray: its RayK::valid() (which it asserts) wants every origin and
+// direction component within ±1.844e18 and tnear, tfar not NaN. A ray from beyond that is traced here
+// instead, shape by shape.
+bool embree_can_trace(const RTCRay& r) {
+    constexpr float kLargest = static_cast<float>(EmbreeAccelerator::kEmbreeLargest);
+    for (const float c : {r.org_x, r.org_y, r.org_z, r.dir_x, r.dir_y, r.dir_z}) {
+        if (!(std::abs(c) <= kLargest)) {
+            return false;
+        }
+    }
+    return !std::isnan(r.tnear) && !std::isnan(r.tfar);
 }
 
 }  // namespace
@@ -124,9 +143,11 @@ EmbreeAccelerator::EmbreeAccelerator(std::span<const Shape* const> shapes)
         const Shape* shape = shapes_[i];
         const Bounds3 b = shape->bounds();
         bounds_.grow(b);
-        if (!b.is_finite()) {
+        const bool within_embree = b.is_finite() && max_component(abs(b.lo)) < kEmbreeLargest &&
+                                   max_component(abs(b.hi)) < kEmbreeLargest;
+        if (!within_embree) {
             if (!b.empty()) {
-                unbounded_.push_back(static_cast<std::uint32_t>(i));
+                direct_.push_back(static_cast<std::uint32_t>(i));
             }
             continue;
         }
@@ -162,6 +183,7 @@ EmbreeAccelerator::EmbreeAccelerator(std::span<const Shape* const> shapes)
             rtcSetGeometryIntersectFunction(geometry, shape_intersect);
             rtcSetGeometryOccludedFunction(geometry, shape_occluded);
         }
+        traced_.push_back(static_cast<std::uint32_t>(i));
         rtcCommitGeometry(geometry);
         rtcAttachGeometryByID(scene_, geometry, static_cast<unsigned>(i));
         rtcReleaseGeometry(geometry);
@@ -176,18 +198,28 @@ EmbreeAccelerator::~EmbreeAccelerator() {
 
 bool EmbreeAccelerator::intersect(const Ray& ray, double t_max, Hit& hit) const {
     bool found = false;
-    for (std::uint32_t i : unbounded_) {
+    for (std::uint32_t i : direct_) {
         if (shapes_[i]->intersect(ray, t_max, hit)) {
             t_max = hit.t;
             hit.primitive = i;
             found = true;
         }
     }
+    RTCRayHit rayhit{};
+    rayhit.ray = embree_ray(ray, t_max);
+    if (!embree_can_trace(rayhit.ray)) {
+        for (std::uint32_t i : traced_) {
+            if (shapes_[i]->intersect(ray, t_max, hit)) {
+                t_max = hit.t;
+                hit.primitive = i;
+                found = true;
+            }
+        }
+        return found;
+    }
     Hit user_hit;
     QueryContext context{{}, &ray, &user_hit, t_max};
     rtcInitIntersectContext(&context.base);
-    RTCRayHit rayhit{};
-    rayhit.ray = embree_ray(ray, t_max);
     rayhit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rayhit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(scene_, &context.base, &rayhit);
@@ -210,15 +242,19 @@ bool EmbreeAccelerator::intersect(const Ray& ray, double t_max, Hit& hit) const 
 }
 
 bool EmbreeAccelerator::occluded(const Ray& ray, double t_max) const {
-    for (std::uint32_t i : unbounded_) {
+    for (std::uint32_t i : direct_) {
         if (shapes_[i]->occluded(ray, t_max)) {
             return true;
         }
     }
+    RTCRay r = embree_ray(ray, t_max);
+    if (!embree_can_trace(r)) {
+        return std::any_of(traced_.begin(), traced_.end(),
+                           [&](std::uint32_t i) { return shapes_[i]->occluded(ray, t_max); });
+    }
     Hit unused;
     QueryContext context{{}, &ray, &unused, t_max};
     rtcInitIntersectContext(&context.base);
-    RTCRay r = embree_ray(ray, t_max);
     rtcOccluded1(scene_, &context.base, &r);
     return r.tfar < 0;
 }

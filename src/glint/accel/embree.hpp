@@ -5,7 +5,9 @@
 // user geometry whose callbacks call the shape in double. Embree's candidate triangle hits are checked
 // in double by a filter before Embree accepts them, and the nearest is recomputed in double by the
 // mesh, so the answers are the double-precision ones, as with the BVH. Unbounded shapes (planes) are
-// tested apart, as in the BVH.
+// tested apart, as in the BVH; so are shapes with a coordinate beyond kEmbreeLargest, which Embree
+// would silently leave out of its scene; and rays from beyond it, which Embree cannot trace, are tested
+// against every shape.
 #pragma once
 
 #ifdef GLINT_HAVE_EMBREE
@@ -20,6 +22,10 @@ class Mesh;
 
 class EmbreeAccelerator final : public Accelerator {
   public:
+    // Embree ignores primitives with a coordinate beyond this ("values greater than 1.844E18f", its
+    // rtcCommitScene documentation), so a shape whose box reaches beyond it is not given to Embree.
+    static constexpr double kEmbreeLargest = 1.844e18;
+
     explicit EmbreeAccelerator(std::span<const Shape* const> shapes);
     ~EmbreeAccelerator() override;
     EmbreeAccelerator(const EmbreeAccelerator&) = delete;
@@ -32,9 +38,14 @@ class EmbreeAccelerator final : public Accelerator {
   private:
     RTCDevice device_ = nullptr;
     RTCScene scene_ = nullptr;
-    std::vector<const Shape*> shapes_;      // by scene index = Embree geometry id
-    std::vector<const Mesh*> meshes_;       // shapes_[i] as a mesh, or nullptr
-    std::vector<std::uint32_t> unbounded_;  // scene indices of planes and other infinite shapes
+    std::vector<const Shape*> shapes_;  // by scene index = Embree geometry id
+    std::vector<const Mesh*> meshes_;   // shapes_[i] as a mesh, or nullptr
+    // Scene indices of the shapes tested for every ray, apart from Embree: planes and other infinite
+    // shapes, and shapes beyond kEmbreeLargest.
+    std::vector<std::uint32_t> direct_;
+    // Scene indices of the shapes given to Embree: tested one by one for a ray Embree cannot trace (one
+    // from beyond kEmbreeLargest).
+    std::vector<std::uint32_t> traced_;
     Bounds3 bounds_;
 };
 

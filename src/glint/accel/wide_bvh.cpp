@@ -14,14 +14,19 @@
 #include <deque>
 #include <memory>
 #include <mutex>
+#include <stdexcept>
+#include <string>
 
 namespace glint {
 namespace {
 
 constexpr int kBins = 16;
 // Beyond this binary depth, splits are median splits by count, which halve the range: the depth (and
-// so the traversal stack) stays bounded whatever the input.
+// so the traversal stack) stays bounded whatever the input. 32 halvings bring any range of up to 2^32
+// primitives down to one, so no range ever reaches WideBvh::kMaxDepth, which a range becomes a leaf at
+// all the same (a second guarantee that the recursion ends, whatever the boxes).
 constexpr int kMedianSplitDepth = 48;
+static_assert(kMedianSplitDepth + 32 < WideBvh::kMaxDepth);
 // Ranges of at least this many primitives are built by their own task.
 constexpr std::size_t kTaskGrain = 4096;
 // Ranges of at least this many primitives are binned and partitioned by several threads, in chunks of
@@ -136,15 +141,21 @@ struct Box {
         store4(c.hi, hi);
         return c;
     }
-    // Half the surface area, in double: the SAH compares sums of these. 0 for an empty box.
+    // Half the surface area, in double: the SAH compares sums of these. 0 for an empty box. Always
+    // finite: an extent beyond float's range (a box saturated to infinity) counts as the largest float
+    // extent, so that the SAH still compares costs (inf · 0 would be NaN, and inf costs all tie).
     double half_area() const {
         const Corners c = corners();
         if (!(c.lo[0] <= c.hi[0] && c.lo[1] <= c.hi[1] && c.lo[2] <= c.hi[2])) {
             return 0;
         }
-        const double x = double{c.hi[0]} - c.lo[0], y = double{c.hi[1]} - c.lo[1],
-                     z = double{c.hi[2]} - c.lo[2];
+        const double x = clamp_extent(double{c.hi[0]} - c.lo[0]), y = clamp_extent(double{c.hi[1]} - c.lo[1]),
+                     z = clamp_extent(double{c.hi[2]} - c.lo[2]);
         return x * y + y * z + z * x;
+    }
+    static double clamp_extent(double extent) {
+        constexpr double kLargest = 2.0 * std::numeric_limits<float>::max();
+        return extent <= kLargest ? extent : kLargest;  // inf and NaN (inf − inf) alike
     }
 };
 
@@ -238,10 +249,9 @@ class Builder {
                 for (std::size_t i = r.begin(); i < r.end(); ++i) {
                     const Bounds3 b = box_of(i);
                     acc.exact.grow(b);
-                    refs_[i] = PrimRef{
-                        {round_down_to_float(b.lo.x), round_down_to_float(b.lo.y),
-                         round_down_to_float(b.lo.z), std::bit_cast<float>(static_cast<std::uint32_t>(i))},
-                        {round_up_to_float(b.hi.x), round_up_to_float(b.hi.y), round_up_to_float(b.hi.z), 0}};
+                    refs_[i] = PrimRef{{lower_bound(b.lo.x), lower_bound(b.lo.y), lower_bound(b.lo.z),
+                                        std::bit_cast<float>(static_cast<std::uint32_t>(i))},
+                                       {upper_bound(b.hi.x), upper_bound(b.hi.y), upper_bound(b.hi.z), 0}};
                     acc.boxes.grow(refs_[i]);
                     acc.centroids.grow_point(refs_[i].centroid2());
                 }
@@ -292,6 +302,15 @@ class Builder {
     }
 
   private:
+    // A box's bounds in float, rounded outwards; a NaN bound (a box that cannot be evaluated) becomes
+    // infinite, so that the box still contains whatever the primitive is.
+    static float lower_bound(double lo) {
+        return std::isnan(lo) ? -std::numeric_limits<float>::infinity() : round_down_to_float(lo);
+    }
+    static float upper_bound(double hi) {
+        return std::isnan(hi) ? std::numeric_limits<float>::infinity() : round_up_to_float(hi);
+    }
+
     // The chunks of a large range; each is processed whole by one thread, and results are combined in
     // chunk order.
     static std::size_t chunk_count(const Range& range) { return (range.size() + kChunk - 1) / kChunk; }
@@ -432,32 +451,67 @@ class Builder {
         return static_cast<double>((count + group - 1) / group);
     }
 
-    // Splits `range` into two, or marks it a leaf. Returns false if it became a leaf.
+    // The axis for a median split: the longest the binning can split; else one along which the
+    // centroids still differ, by more than float can bin (some are infinite); -1 if they are all equal.
+    static int median_axis(const Range& range, const Binning& binning) {
+        int axis = -1;
+        for (int a = 0; a < 3; ++a) {
+            if (binning.scale[a] > 0 && (axis < 0 || binning.scale[a] < binning.scale[axis])) {
+                axis = a;  // the longest axis has the fewest bins per unit
+            }
+        }
+        if (axis < 0) {
+            const Box::Corners c = range.centroid_bounds.corners();
+            for (int a = 0; a < 3; ++a) {
+                if (c.lo[a] < c.hi[a]) {
+                    return a;
+                }
+            }
+        }
+        return axis;
+    }
+
+    // Splits the range in two halves by count along `axis`: always progress (both halves are non-empty
+    // for n >= 2), whatever the boxes. NaN centroids (from infinite boxes: −inf + inf) sort first, so
+    // that the comparison is a strict weak order.
+    Sides median_split(const Range& range, int axis) {
+        const auto key = [axis](const PrimRef& p) {
+            const float c = p.centroid2(axis);
+            return std::isnan(c) ? -std::numeric_limits<float>::infinity() : c;
+        };
+        const std::size_t mid = range.begin + range.size() / 2;
+        std::nth_element(refs_.get() + range.begin, refs_.get() + mid, refs_.get() + range.end,
+                         [&](const PrimRef& a, const PrimRef& b) {
+                             const float ka = key(a), kb = key(b);
+                             return ka < kb || (ka == kb && a.id() < b.id());
+                         });
+        Sides sides;
+        for (std::size_t i = range.begin; i < range.end; ++i) {
+            sides.add(refs_[i], i < mid);
+        }
+        return sides;
+    }
+
+    // Splits `range` into two, or marks it a leaf. Returns false if it became a leaf. Every split leaves
+    // both sides non-empty, so the recursion always ends; and a range at kMaxDepth is a leaf whatever
+    // its size (no input gets there: see kMedianSplitDepth).
     bool split(Range& range, Range& left, Range& right) {
         const std::size_t n = range.size();
+        if (n <= 1 || range.depth >= WideBvh::kMaxDepth) {
+            range.is_leaf = true;
+            return false;
+        }
         const Binning binning(range.centroid_bounds);
-        if (n <= 1 || !binning.can_split()) {
+        const bool fits_leaf = n <= static_cast<std::size_t>(options_.max_leaf_size);
+        const int halving_axis = median_axis(range, binning);
+        if (halving_axis < 0 || (fits_leaf && !binning.can_split())) {
             range.is_leaf = true;  // identical centroids: no plane separates them
             return false;
         }
         Sides sides;
-        if (range.depth >= kMedianSplitDepth) {
-            int axis = 0;
-            for (int a = 1; a < 3; ++a) {
-                if (binning.scale[a] > 0 &&
-                    (binning.scale[axis] == 0 || binning.scale[a] < binning.scale[axis])) {
-                    axis = a;  // the longest axis has the fewest bins per unit
-                }
-            }
-            const std::size_t mid = range.begin + n / 2;
-            std::nth_element(refs_.get() + range.begin, refs_.get() + mid, refs_.get() + range.end,
-                             [&](const PrimRef& a, const PrimRef& b) {
-                                 return a.centroid2(axis) < b.centroid2(axis) ||
-                                        (a.centroid2(axis) == b.centroid2(axis) && a.id() < b.id());
-                             });
-            for (std::size_t i = range.begin; i < range.end; ++i) {
-                sides.add(refs_[i], i < mid);
-            }
+        if (range.depth >= kMedianSplitDepth || !binning.can_split()) {
+            // Deep, or centroids spread further than float can bin (some infinite): halve by count.
+            sides = median_split(range, halving_axis);
         } else {
             Bins bins;
             fill_bins(range, binning, bins);
@@ -505,15 +559,19 @@ class Builder {
             const double area = range.bounds.half_area();
             const double split_cost = options_.traversal_cost + (area > 0 ? best_cost / area : tests(n));
             const double leaf_cost = tests(n);
-            const bool fits_leaf = n <= static_cast<std::size_t>(options_.max_leaf_size);
-            if (best_axis < 0 || (fits_leaf && leaf_cost <= split_cost)) {
+            if (fits_leaf && (best_axis < 0 || leaf_cost <= split_cost)) {
                 range.is_leaf = true;
                 return false;
             }
-            sides = partition(range, [&](const PrimRef& p) { return binning.bin(p, best_axis) <= best_bin; });
-            if (sides.left_count == 0 || sides.left_count == n) {
-                range.is_leaf = true;  // cannot happen with consistent binning; a leaf is still correct
-                return false;
+            // With finite areas (half_area is always finite) a splittable range always has a best
+            // plane, and the partition matches the binning; the median split is the fallback that
+            // guarantees progress should either ever fail.
+            if (best_axis >= 0) {
+                sides =
+                    partition(range, [&](const PrimRef& p) { return binning.bin(p, best_axis) <= best_bin; });
+            }
+            if (best_axis < 0 || sides.left_count == 0 || sides.left_count == n) {
+                sides = median_split(range, halving_axis);
             }
         }
         const std::size_t mid = range.begin + sides.left_count;
@@ -558,8 +616,10 @@ class Builder {
             }
             const Range& child = children[static_cast<std::size_t>(c)];
             set_child_box(node, c, child.bounds);
-            const bool leaf =
-                child.is_leaf || child.size() <= static_cast<std::size_t>(options_.max_leaf_size);
+            // A node of one child is a leaf (the loop above only stops at one child when the range
+            // could not be split): never an inner node of the same range again, for ever.
+            const bool leaf = child.is_leaf || children.size() == 1 ||
+                              child.size() <= static_cast<std::size_t>(options_.max_leaf_size);
             if (leaf) {
                 node.child[c] = static_cast<std::uint32_t>(child.begin);
                 node.count[c] = static_cast<std::uint32_t>(child.size());
@@ -632,12 +692,24 @@ void WideBvh::build(std::size_t count, const std::function<Bounds3(std::size_t)>
     order_.clear();
     nodes_.clear();
     bounds_ = Bounds3{};
+    largest_inverse_ = 1e30;
     if (count == 0) {
         return;
+    }
+    if (count > std::numeric_limits<std::uint32_t>::max()) {
+        // Leaves and the primitive order hold 32-bit positions.
+        throw std::length_error("a BVH holds at most 2^32 - 1 primitives, not " + std::to_string(count));
     }
     Builder builder(count, box_of, options, bounds_);
     nodes_ = builder.build(order_);
     nodes_.shrink_to_fit();
+    // Below 8.5e7 (all ordinary scenes) this is 1e30. It is never less than 2^20: the child boxes are
+    // padded by 2^-20 of their coordinates, so a ray inside a box still gets a far slab beyond its
+    // other slabs' near ones (trees beyond 1e26 or so are beyond what float traversal can answer).
+    const double magnitude = std::max(max_component(abs(bounds_.lo)), max_component(abs(bounds_.hi)));
+    if (magnitude * 1e30 > std::numeric_limits<float>::max() / 4) {
+        largest_inverse_ = std::max(0x1p20, std::numeric_limits<float>::max() / 4 / magnitude);
+    }
 }
 
 bool WideBvh::cpu_has_avx2() {

@@ -83,8 +83,16 @@ struct BvhBuildOptions {
 
 class WideBvh {
   public:
+    // The deepest a build goes, in binary splits (so also in wide levels): what bounds the traversal
+    // stack. A range this deep is a leaf, whatever its size; no input reaches it in practice (see
+    // kMedianSplitDepth in wide_bvh.cpp).
+    static constexpr int kMaxDepth = 96;
+
     WideBvh() = default;
-    // Builds over one box per primitive. Boxes must be finite (unbounded shapes are kept elsewhere).
+    // Builds over one box per primitive (at most 2^32 − 1 of them; std::length_error beyond). Any boxes
+    // give a tree, in bounded time and depth: boxes beyond float's range saturate to infinity, NaN
+    // bounds count as infinite, identical boxes share a leaf. (Unbounded shapes are best kept elsewhere,
+    // as the scene's BVH does: a box that does not cull is tested by every ray that reaches it.)
     void build(std::span<const Bounds3> boxes, const BvhBuildOptions& options = {});
     // The same, asking `box_of(i)` for primitive i's box (from several threads at once), so that a mesh
     // need not hold an array of boxes only to hand it over.
@@ -159,6 +167,12 @@ class WideBvh {
     std::vector<WideBvhNode> nodes_;  // nodes_[0] is the root (when there are primitives)
     std::vector<std::uint32_t> order_;
     Bounds3 bounds_;
+    // The largest inverse direction component traversal uses (the stand-in for 1/0 of an axis-aligned
+    // ray): 1e30, or less for a tree whose coordinates times 1e30 would overflow float. The slab test
+    // computes plane · inverse − origin · inverse; an overflow there gives inf − inf, or with FMA the
+    // wrong infinity, and culled boxes the ray is inside (a mesh at x = 1e10 was missed by vertical
+    // rays). Set by build(): kept below float's largest value over 4 · the tree's largest coordinate.
+    double largest_inverse_ = 1e30;
     const char* leaf_data_ = nullptr;
     std::size_t leaf_stride_ = 0;
 };
@@ -173,13 +187,13 @@ struct WideBvh::TraversalRay {
     int near_offset[3];  // offset of the near plane's array (lo or hi) within a node, per axis
     int far_offset[3];
 
-    explicit TraversalRay(const Ray& ray) {
+    // `largest_inverse` is the tree's (WideBvh::largest_inverse_): see there.
+    TraversalRay(const Ray& ray, double largest_inverse) {
         for (int a = 0; a < 3; ++a) {
             // A zero component gives ±inf; a finite stand-in keeps 0 · inf (NaN) out of the slab test.
             double inverse = 1.0 / ray.direction[a];
-            constexpr double kHuge = 1e30;
-            if (!(std::abs(inverse) < kHuge)) {
-                inverse = std::signbit(ray.direction[a]) ? -kHuge : kHuge;
+            if (!(std::abs(inverse) < largest_inverse)) {
+                inverse = std::signbit(ray.direction[a]) ? -largest_inverse : largest_inverse;
             }
             inv[a] = saturate_to_float(inverse);
             origin_inv[a] = saturate_to_float(ray.origin[a] * inverse);
@@ -290,9 +304,10 @@ __attribute__((always_inline)) inline bool WideBvh::traverse(const Ray& ray, dou
     if (nodes_.empty()) {
         return false;
     }
-    const TraversalRay r(ray);
-    // The build bounds the depth (see kMedianSplitDepth in wide_bvh.cpp), so 7 entries per level suffice.
+    const TraversalRay r(ray, largest_inverse_);
+    // The build bounds the depth (kMaxDepth), and each level adds at most 7 entries (8 pushed, 1 popped).
     constexpr int kStackSize = 1024;
+    static_assert(kStackSize >= (WideBvhNode::kWidth - 1) * kMaxDepth + 1);
     StackEntry stack[kStackSize];
     int top = 0;
     bool found = false;

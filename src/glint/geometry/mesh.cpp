@@ -31,9 +31,42 @@ bool usable_normal(const Vec3& n) {
     return std::isfinite(l2) && l2 > 1e-30;
 }
 
+// The checks that keep a mesh made by code (not by a loader, which checks more and says where) from
+// reading out of bounds: counts, indices, and positions the triangle test can compute with.
+void check_mesh_data(const MeshData& data) {
+    const MeshLimits limits;
+    if (data.triangles.size() > limits.max_triangles) {
+        throw std::invalid_argument("the mesh has " + std::to_string(data.triangles.size()) +
+                                    " triangles, more than the limit of " +
+                                    mesh_io::limit_text(limits.max_triangles));
+    }
+    if (!data.normals.empty() && data.normals.size() != data.positions.size()) {
+        throw std::invalid_argument("the mesh has " + std::to_string(data.normals.size()) + " normals for " +
+                                    std::to_string(data.positions.size()) +
+                                    " positions (expected one per position, or none)");
+    }
+    for (std::size_t v = 0; v < data.positions.size(); ++v) {
+        if (!is_finite(data.positions[v])) {
+            throw std::invalid_argument("vertex " + std::to_string(v) + " of the mesh is not finite");
+        }
+    }
+    for (std::size_t t = 0; t < data.triangles.size(); ++t) {
+        for (std::uint32_t v : data.triangles[t]) {
+            if (v >= data.positions.size()) {
+                throw std::invalid_argument(
+                    "triangle " + std::to_string(t) + " of the mesh refers to vertex " + std::to_string(v) +
+                    ", but there are " + std::to_string(data.positions.size()) + " vertices");
+            }
+        }
+    }
+}
+
 }  // namespace
 
-Mesh::Mesh(MeshData data) : positions_(std::move(data.positions)), normals_(std::move(data.normals)) {
+Mesh::Mesh(MeshData data) {
+    check_mesh_data(data);
+    positions_ = std::move(data.positions);
+    normals_ = std::move(data.normals);
     const auto start = std::chrono::steady_clock::now();
     triangles_.reserve(data.triangles.size());
     for (const auto& tri : data.triangles) {

@@ -20,7 +20,10 @@ class Mesh final : public Shape {
   public:
     // Takes a loaded mesh: drops zero-area triangles, recomputes missing or broken (zero, NaN) vertex
     // normals from the surrounding faces, and builds the BVH. Throws std::invalid_argument if no
-    // triangle has an area.
+    // triangle has an area, or if the data is not a mesh: an index out of range, a position that is not
+    // finite, normals neither one per position nor none, more triangles than MeshLimits allows.
+    // (Positions beyond float's range, which the loaders reject, are accepted here: the BVH bounds
+    // them with infinite boxes, which are correct but cull nothing.)
     explicit Mesh(MeshData data);
     // Not copyable: the BVH prefetches from this mesh's own triangle blocks (WideBvh::set_leaf_data), so
     // a copy would point into the original's. Moving keeps the blocks' storage, and the pointer valid.

@@ -19,18 +19,43 @@ struct MeshData {
     std::vector<std::array<std::uint32_t, 3>> triangles;  // indices into positions, counter-clockwise
 };
 
+// The largest mesh a file may describe. Every count read from a file is checked against these, and
+// against what the rest of the file could hold, before anything is allocated from it; the default
+// values are the documented limits (docs/scene-format.md), tests pass smaller ones.
+struct MeshLimits {
+    // 8 GiB. The file is read whole into memory; a binary PLY at the triangle limit takes about 5 GB.
+    std::uint64_t max_file_bytes = std::uint64_t{1} << 33;
+    // 2^28 = 268 435 456 vertices (after OBJ corners that differ in their normal are made separate
+    // vertices), and as many triangles (after polygons are split into fans). Triangle, vertex, BVH leaf
+    // and triangle-block numbers are 32-bit; 2^28 keeps them 16 times below overflow. A mesh takes
+    // about 200 bytes per triangle once built, so the limit is already some 50 GB of memory.
+    std::uint64_t max_vertices = std::uint64_t{1} << 28;
+    std::uint64_t max_triangles = std::uint64_t{1} << 28;
+};
+
+// The largest coordinate a mesh vertex may have: float's largest value. The BVH stores its boxes in
+// float, so a vertex beyond it could not be bounded; and it is surely a mistake in the file.
+inline constexpr double kMaxMeshCoordinate = 3.4028234663852886e38;  // std::numeric_limits<float>::max()
+
 // Reads an .obj or .ply file (chosen by the extension, case-insensitive). Every problem with the file
 // is a SceneError positioned in it: file:line:col for text, a byte offset and element for binary data.
 // `mentioned_at` is where the scene names the file, for errors about the file as a whole (missing,
-// unknown extension).
-MeshData load_mesh_file(const std::filesystem::path& path, const SourcePos& mentioned_at = {});
+// unknown extension, too large).
+MeshData load_mesh_file(const std::filesystem::path& path, const SourcePos& mentioned_at = {},
+                        const MeshLimits& limits = {});
 
-MeshData load_obj(const std::filesystem::path& path);
-MeshData load_ply(const std::filesystem::path& path);
+MeshData load_obj(const std::filesystem::path& path, const MeshLimits& limits = {},
+                  const SourcePos& mentioned_at = {});
+MeshData load_ply(const std::filesystem::path& path, const MeshLimits& limits = {},
+                  const SourcePos& mentioned_at = {});
 
 namespace mesh_io {
-// The whole file as bytes; a SceneError at `mentioned_at` if it cannot be read.
-std::string read_file(const std::filesystem::path& path, const SourcePos& mentioned_at = {});
+// The whole file as bytes; a SceneError at `mentioned_at` if it cannot be read or is larger than
+// `max_bytes` (its size is asked first, so nothing is allocated for a file that is too large).
+std::string read_file(const std::filesystem::path& path, const SourcePos& mentioned_at,
+                      std::uint64_t max_bytes);
+// "268435456 (2^28)": a limit as messages show it.
+std::string limit_text(std::uint64_t limit);
 }  // namespace mesh_io
 
 }  // namespace glint

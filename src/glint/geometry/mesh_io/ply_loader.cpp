@@ -2,11 +2,17 @@
 // optional nx, ny, nz; `face` elements' vertex_indices (or vertex_index) lists of any size, split into
 // fans; `tristrips` elements' vertex_indices strips (−1 restarts a strip; the winding alternates, and
 // the degenerate triangles that stitch strips are dropped). Other elements and properties are read past.
+//
+// Hostile files: every element's count is checked against MeshLimits and against what the bytes after
+// the header can hold before anything is read or allocated, and so is every list's length before its
+// items are read; index lists are turned into triangles as they are read, never stored; element names
+// must differ (two `vertex` elements would give positions and normals of different lengths).
 #include <algorithm>
 #include <bit>
 #include <charconv>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <sstream>
 
 #include "glint/geometry/mesh_io/mesh_data.hpp"
@@ -28,6 +34,7 @@ struct PlyElement {
     std::string name;
     std::uint64_t count = 0;
     std::vector<PlyProperty> properties;
+    std::uint64_t header_line = 0;  // where the header declares it, for errors about its count
 };
 
 std::size_t type_size(PlyType type) {
@@ -68,10 +75,12 @@ bool parse_type(const std::string& word, PlyType& type) {
 
 class PlyParser {
   public:
-    PlyParser(std::string path, std::string bytes) : path_(std::move(path)), bytes_(std::move(bytes)) {}
+    PlyParser(std::string path, std::string bytes, const MeshLimits& limits)
+        : path_(std::move(path)), bytes_(std::move(bytes)), limits_(limits) {}
 
     MeshData parse() {
         parse_header();
+        check_counts();
         for (const PlyElement& element : elements_) {
             read_element(element);
         }
@@ -94,15 +103,20 @@ class PlyParser {
         }
         return text_file_;
     }
-    [[noreturn]] void fail_header(int line, int column, const std::string& message) const {
-        throw SceneError(SourcePos{text_file(), line, column}, message);
+    // Positions are ints; a file within the size limit could have more lines, or longer ones.
+    static int clamp_to_int(std::uint64_t value) {
+        return static_cast<int>(std::min<std::uint64_t>(value, std::numeric_limits<int>::max()));
     }
-    // An error in the data: file:line:col for ascii, the byte offset for binary; both name the element.
+    [[noreturn]] void fail_header(std::uint64_t line, int column, const std::string& message) const {
+        throw SceneError(SourcePos{text_file(), clamp_to_int(line), column}, message);
+    }
+    // An error in the data: file:line:col for ascii, the byte offset for binary; both name the element
+    // and the record (for the vertex element: the vertex index).
     [[noreturn]] void fail_data(const std::string& message) const {
         const std::string where =
             current_element_ ? current_element_->name + " " + std::to_string(current_index_) : "";
         if (format_ == PlyFormat::Ascii) {
-            throw SceneError(SourcePos{text_file(), token_line_, token_column_},
+            throw SceneError(SourcePos{text_file(), clamp_to_int(token_line_), clamp_to_int(token_column_)},
                              "in " + where + ": " + message);
         }
         throw SceneError(SourcePos{SourceFile::from_text(path_, ""), 0, 0},
@@ -112,12 +126,13 @@ class PlyParser {
     // --- header -------------------------------------------------------------------------------------
     void parse_header() {
         std::size_t pos = 0;
-        int line_number = 0;
+        std::uint64_t line_number = 0;
         bool saw_format = false;
         while (true) {
             if (pos >= bytes_.size()) {
                 data_start_ = bytes_.size();
-                fail_header(std::max(line_number, 1), 1, "the PLY header has no 'end_header' line");
+                fail_header(std::max<std::uint64_t>(line_number, 1), 1,
+                            "the PLY header has no 'end_header' line");
             }
             std::size_t end = bytes_.find('\n', pos);
             if (end == std::string::npos) {
@@ -162,12 +177,26 @@ class PlyParser {
                 saw_format = true;
             } else if (keyword == "element") {
                 PlyElement element;
-                long long count = -1;
+                element.header_line = line_number;
+                std::string count;
                 words >> element.name >> count;
-                if (element.name.empty() || !words || count < 0) {
-                    fail_header(line_number, 1, "expected 'element <name> <count>'");
+                const auto [end_of_count, error] =
+                    std::from_chars(count.data(), count.data() + count.size(), element.count);
+                if (element.name.empty() || count.empty() || error != std::errc() ||
+                    end_of_count != count.data() + count.size()) {
+                    fail_header(line_number, 1,
+                                "expected 'element <name> <count>' with a count of 0 to 2^64 - 1, found '" +
+                                    line + "'");
                 }
-                element.count = static_cast<std::uint64_t>(count);
+                expect_line_end(words, line_number);
+                for (const PlyElement& earlier : elements_) {
+                    if (earlier.name == element.name) {
+                        fail_header(line_number, 1,
+                                    "element '" + element.name + "' is declared twice (first on line " +
+                                        std::to_string(earlier.header_line) +
+                                        "): a PLY file's elements must have different names");
+                    }
+                }
                 elements_.push_back(std::move(element));
             } else if (keyword == "property") {
                 if (elements_.empty()) {
@@ -185,15 +214,30 @@ class PlyParser {
                         fail_header(line_number, 1,
                                     "unknown or non-integer list count type '" + count_type + "'");
                     }
+                    if (type == "list") {
+                        fail_header(line_number, 1, "a list of lists is not a PLY property type");
+                    }
                 }
                 if (!parse_type(type, property.type)) {
-                    fail_header(line_number, 1, "unknown property type '" + type + "'");
+                    fail_header(line_number, 1,
+                                "unknown property type '" + type +
+                                    "' (expected char, uchar, short, ushort, int, uint, float, double, "
+                                    "int8 to uint32, float32, float64 or list)");
                 }
                 words >> property.name;
                 if (property.name.empty()) {
                     fail_header(line_number, 1, "the property has no name");
                 }
-                elements_.back().properties.push_back(std::move(property));
+                expect_line_end(words, line_number);
+                PlyElement& element = elements_.back();
+                for (const PlyProperty& earlier : element.properties) {
+                    if (earlier.name == property.name) {
+                        fail_header(line_number, 1,
+                                    "element '" + element.name + "' has two properties named '" +
+                                        property.name + "'");
+                    }
+                }
+                element.properties.push_back(std::move(property));
             } else {
                 fail_header(line_number, 1, "unknown PLY header line '" + keyword + "'");
             }
@@ -210,11 +254,70 @@ class PlyParser {
         for (const char* axis : {"x", "y", "z"}) {
             if (std::none_of(vertex->properties.begin(), vertex->properties.end(),
                              [&](const PlyProperty& p) { return p.name == axis && !p.is_list; })) {
-                fail_header(1, 1, std::string("the vertex element has no '") + axis + "' property");
+                fail_header(
+                    vertex->header_line, 1,
+                    std::string("the vertex element has no '") + axis + "' property (or it is a list)");
             }
         }
         cursor_ = data_start_;
         line_ = line_number + 1;
+    }
+
+    void expect_line_end(std::istringstream& words, std::uint64_t line_number) const {
+        std::string extra;
+        if (words >> extra) {
+            fail_header(line_number, 1, "unexpected '" + extra + "' at the end of the line");
+        }
+    }
+
+    // Every element's count against the limits and against what the data after the header can hold,
+    // before anything is read or allocated: a record takes at least one byte per scalar property and
+    // one count per list in binary, and at least one word per property in ascii (a word and the blank
+    // after it take two bytes, except the last word of the file).
+    void check_counts() const {
+        const std::uint64_t data_bytes = bytes_.size() - data_start_;
+        std::uint64_t room = format_ == PlyFormat::Ascii ? (data_bytes + 1) / 2 : data_bytes;
+        const char* unit = format_ == PlyFormat::Ascii ? " words" : " bytes";
+        // The limits first: they hold whatever the file's size.
+        for (const PlyElement& element : elements_) {
+            if (element.name == "vertex" && element.count > limits_.max_vertices) {
+                fail_header(element.header_line, 1,
+                            "the PLY file declares " + std::to_string(element.count) +
+                                " vertices, more than the limit of " +
+                                mesh_io::limit_text(limits_.max_vertices));
+            }
+            if (element.name == "face" && element.count > limits_.max_triangles) {
+                fail_header(element.header_line, 1,
+                            "the PLY file declares " + std::to_string(element.count) +
+                                " faces, more than the limit of " +
+                                mesh_io::limit_text(limits_.max_triangles) +
+                                " triangles (each face makes at least one)");
+            }
+        }
+        for (const PlyElement& element : elements_) {
+            std::uint64_t record = 0;  // the least a record of the element takes, in bytes or words
+            for (const PlyProperty& property : element.properties) {
+                record += format_ == PlyFormat::Ascii
+                              ? 1
+                              : type_size(property.is_list ? property.count_type : property.type);
+            }
+            if (element.count == 0) {
+                continue;
+            }
+            if (record == 0) {
+                fail_header(element.header_line, 1,
+                            "element '" + element.name + "' has " + std::to_string(element.count) +
+                                " records but no properties: its records would be empty");
+            }
+            if (element.count > room / record) {
+                fail_header(element.header_line, 1,
+                            "element '" + element.name + "' declares " + std::to_string(element.count) +
+                                " records of at least " + std::to_string(record) + unit + ", but only " +
+                                std::to_string(room) + unit +
+                                " can follow in the file (after the elements before it)");
+            }
+            room -= element.count * record;
+        }
     }
 
     // --- data ---------------------------------------------------------------------------------------
@@ -231,7 +334,7 @@ class PlyParser {
             line_begin_ = data_start_;
         }
         token_line_ = line_;
-        token_column_ = static_cast<int>(cursor_ - line_begin_) + 1;
+        token_column_ = cursor_ - line_begin_ + 1;
         const std::size_t begin = cursor_;
         while (cursor_ < bytes_.size() && !std::isspace(static_cast<unsigned char>(bytes_[cursor_]))) {
             ++cursor_;
@@ -288,6 +391,17 @@ class PlyParser {
         }
         return 0;
     }
+    // A value read from the file, as messages show it: an integer as one, anything else as the shortest
+    // text that reads back as it.
+    static std::string number_text(double value) {
+        if (value == std::floor(value) && std::abs(value) < 0x1p63) {
+            return std::to_string(static_cast<long long>(value));
+        }
+        char text[32];
+        const auto result = std::to_chars(text, text + sizeof(text), value);
+        return std::string(text, result.ptr);
+    }
+
     template <class T>
     static T load(const unsigned char* raw) {
         T value;
@@ -295,49 +409,95 @@ class PlyParser {
         return value;
     }
 
-    // Where a value was read, so that an error found later can point at it.
-    struct ValuePos {
-        int line = 0, column = 0;
-        std::size_t offset = 0;
-    };
-
-    // Reads a list property's items into `items` (ints), checking the count.
-    void read_list(const PlyProperty& property, std::vector<long long>& items) {
-        items.clear();
-        item_pos_.clear();
-        const double count = read_value(property.count_type);
+    // A list's length, checked against what is left of the file (binary: bytes for its items; ascii:
+    // words) before any item is read.
+    std::uint64_t read_list_length(const PlyProperty& property) {
+        const double count = read_value(property.count_type);  // an integer: read_value checked
         if (count < 0) {
             fail_data("a list has a negative length");
         }
-        if (count > 1e9) {
-            fail_data("a list claims more than a billion items");
-        }
-        if (format_ != PlyFormat::Ascii && count * static_cast<double>(type_size(property.type)) >
-                                               static_cast<double>(bytes_.size() - cursor_)) {
-            fail_data("a list of " + std::to_string(static_cast<long long>(count)) +
+        const std::uint64_t bytes_left = bytes_.size() - cursor_;
+        const double room = format_ == PlyFormat::Ascii
+                                ? static_cast<double>((bytes_left + 1) / 2)
+                                : static_cast<double>(bytes_left / type_size(property.type));
+        if (count > room) {
+            fail_data("a list of " + std::to_string(static_cast<std::uint64_t>(count)) +
                       " items runs past the end of the file");
         }
-        for (long long i = 0; i < static_cast<long long>(count); ++i) {
-            const double value = read_value(property.type);
-            if (value != std::floor(value) || std::abs(value) > 1e18) {
-                fail_data("a vertex index is not an integer in range");
-            }
-            items.push_back(static_cast<long long>(value));
-            item_pos_.push_back({token_line_, token_column_, token_offset_});
+        return static_cast<std::uint64_t>(count);
+    }
+
+    // The next item of a vertex index list: a vertex index, or (`restart_allowed`, in strips) −1.
+    std::int64_t read_vertex_index(const PlyProperty& property, bool restart_allowed) {
+        const double value = read_value(property.type);
+        if (restart_allowed && value == -1) {
+            return -1;
+        }
+        if (!(value >= 0 && value < static_cast<double>(vertex_count_) && value == std::floor(value))) {
+            fail_data("vertex index " + number_text(value) + " is out of range (there are " +
+                      std::to_string(vertex_count_) + " vertices)");
+        }
+        return static_cast<std::int64_t>(value);
+    }
+
+    void add_triangle(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+        if (mesh_.triangles.size() >= limits_.max_triangles) {
+            fail_data(
+                "the PLY file makes more than " + mesh_io::limit_text(limits_.max_triangles) +
+                " triangles (the limit: larger meshes do not fit the 32-bit indices and memory of glint)");
+        }
+        mesh_.triangles.push_back({a, b, c});
+    }
+
+    // A face's vertex list, split into a fan as it is read.
+    void read_polygon(const PlyProperty& property) {
+        const std::uint64_t count = read_list_length(property);
+        if (count < 3) {
+            fail_data("a face needs at least three vertices, this one has " + std::to_string(count));
+        }
+        const auto first = static_cast<std::uint32_t>(read_vertex_index(property, false));
+        auto previous = static_cast<std::uint32_t>(read_vertex_index(property, false));
+        for (std::uint64_t k = 2; k < count; ++k) {
+            const auto current = static_cast<std::uint32_t>(read_vertex_index(property, false));
+            add_triangle(first, previous, current);
+            previous = current;
         }
     }
 
-    // Item k of the last list read, as a vertex index.
-    std::uint32_t vertex_index(const std::vector<long long>& items, std::size_t k) {
-        const long long index = items[k];
-        if (index < 0 || static_cast<std::uint64_t>(index) >= vertex_count_) {
-            token_line_ = item_pos_[k].line;
-            token_column_ = item_pos_[k].column;
-            token_offset_ = item_pos_[k].offset;
-            fail_data("vertex index " + std::to_string(index) + " is out of range (there are " +
-                      std::to_string(vertex_count_) + " vertices)");
+    // A tristrips list, into triangles as it is read: −1 restarts the strip; every other triangle of a
+    // strip is wound the other way; the degenerate triangles that stitch strips together are dropped.
+    void read_strips(const PlyProperty& property) {
+        const std::uint64_t count = read_list_length(property);
+        std::uint32_t before_last = 0, last = 0;
+        std::uint64_t run = 0;  // vertices of the current strip so far
+        for (std::uint64_t k = 0; k < count; ++k) {
+            const std::int64_t item = read_vertex_index(property, true);
+            if (item < 0) {
+                run = 0;
+                continue;
+            }
+            const auto current = static_cast<std::uint32_t>(item);
+            if (run >= 2) {
+                std::uint32_t a = before_last, b = last;
+                if (run % 2 == 1) {
+                    std::swap(a, b);
+                }
+                if (a != b && b != current && a != current) {
+                    add_triangle(a, b, current);
+                }
+            }
+            before_last = last;
+            last = current;
+            ++run;
         }
-        return static_cast<std::uint32_t>(index);
+    }
+
+    // Any other list: its items are read past.
+    void skip_list(const PlyProperty& property) {
+        const std::uint64_t count = read_list_length(property);
+        for (std::uint64_t k = 0; k < count; ++k) {
+            read_value(property.type);
+        }
     }
 
     void read_element(const PlyElement& element) {
@@ -355,23 +515,28 @@ class PlyParser {
                     }
                 }
             }
+            // There is one vertex element (parse_header rejects a second), so the normals are all or
+            // none of the positions'.
             has_normals_ = slot[3] >= 0 && slot[4] >= 0 && slot[5] >= 0;
-            // Never trust a count in the header for an allocation bigger than the file could hold.
-            mesh_.positions.reserve(std::min<std::uint64_t>(element.count, bytes_.size() / 3));
+            // check_counts has bounded the count by the file's size and the vertex limit.
+            mesh_.positions.reserve(element.count);
+            if (has_normals_) {
+                mesh_.normals.reserve(element.count);
+            }
         }
-        std::vector<long long> items;
         double values[6] = {0, 0, 0, 0, 0, 0};
         for (std::uint64_t i = 0; i < element.count; ++i) {
             current_index_ = i;
             for (std::size_t p = 0; p < element.properties.size(); ++p) {
                 const PlyProperty& property = element.properties[p];
                 if (property.is_list) {
-                    read_list(property, items);
                     const bool indices = property.name == "vertex_indices" || property.name == "vertex_index";
                     if (indices && is_face) {
-                        add_polygon(items);
+                        read_polygon(property);
                     } else if (indices && is_strips) {
-                        add_strips(items);
+                        read_strips(property);
+                    } else {
+                        skip_list(property);
                     }
                     continue;
                 }
@@ -379,15 +544,18 @@ class PlyParser {
                 for (int s = 0; s < 6; ++s) {
                     if (slot[s] == static_cast<int>(p)) {
                         values[s] = value;
+                        if (s < 3 && !(std::abs(value) <= kMaxMeshCoordinate)) {
+                            fail_data(std::string("the vertex's ") + kSlotNames[s] + " coordinate " +
+                                      number_text(value) +
+                                      (std::isfinite(value) ? " is beyond float's range (at most 3.4e38 in "
+                                                              "magnitude): the BVH could not bound it"
+                                                            : " is not finite"));
+                        }
                     }
                 }
             }
             if (is_vertex) {
-                const Vec3 position{values[0], values[1], values[2]};
-                if (!is_finite(position)) {
-                    fail_data("the vertex position is not finite");
-                }
-                mesh_.positions.push_back(position);
+                mesh_.positions.push_back({values[0], values[1], values[2]});
                 if (has_normals_) {
                     mesh_.normals.push_back({values[3], values[4], values[5]});
                 }
@@ -396,43 +564,9 @@ class PlyParser {
         current_element_ = nullptr;
     }
 
-    void add_polygon(const std::vector<long long>& polygon) {
-        if (polygon.size() < 3) {
-            fail_data("a face needs at least three vertices");
-        }
-        const std::uint32_t first = vertex_index(polygon, 0);
-        std::uint32_t previous = vertex_index(polygon, 1);
-        for (std::size_t k = 2; k < polygon.size(); ++k) {
-            const std::uint32_t current = vertex_index(polygon, k);
-            mesh_.triangles.push_back({first, previous, current});
-            previous = current;
-        }
-    }
-
-    void add_strips(const std::vector<long long>& strip) {
-        std::size_t begin = 0;
-        while (begin < strip.size()) {
-            std::size_t end = begin;
-            while (end < strip.size() && strip[end] != -1) {
-                ++end;
-            }
-            for (std::size_t k = begin; k + 2 < end; ++k) {
-                std::uint32_t a = vertex_index(strip, k);
-                std::uint32_t b = vertex_index(strip, k + 1);
-                const std::uint32_t c = vertex_index(strip, k + 2);
-                if ((k - begin) % 2 == 1) {
-                    std::swap(a, b);  // every other triangle of a strip is wound the other way
-                }
-                if (a != b && b != c && a != c) {
-                    mesh_.triangles.push_back({a, b, c});
-                }
-            }
-            begin = end + 1;
-        }
-    }
-
     std::string path_;
     std::string bytes_;
+    MeshLimits limits_;
     PlyFormat format_ = PlyFormat::Ascii;
     std::vector<PlyElement> elements_;
     std::uint64_t vertex_count_ = 0;
@@ -440,14 +574,12 @@ class PlyParser {
     mutable std::shared_ptr<const SourceFile> text_file_;
 
     std::size_t cursor_ = 0;  // next byte of data
-    int line_ = 1;            // ascii: line of cursor_, and where that line begins
+    std::uint64_t line_ = 1;  // ascii: line of cursor_, and where that line begins
     std::size_t line_begin_ = 0;
-    int token_line_ = 0, token_column_ = 0;  // ascii: where the last word began
-    std::size_t token_offset_ = 0;           // binary: where the last value began
+    std::uint64_t token_line_ = 0, token_column_ = 0;  // ascii: where the last word began
+    std::size_t token_offset_ = 0;                     // binary: where the last value began
     const PlyElement* current_element_ = nullptr;
     std::uint64_t current_index_ = 0;
-
-    std::vector<ValuePos> item_pos_;  // where each item of the last list was read
 
     bool has_normals_ = false;
     MeshData mesh_;
@@ -455,8 +587,10 @@ class PlyParser {
 
 }  // namespace
 
-MeshData load_ply(const std::filesystem::path& path) {
-    return PlyParser(path.string(), mesh_io::read_file(path)).parse();
+MeshData load_ply(const std::filesystem::path& path, const MeshLimits& limits,
+                  const SourcePos& mentioned_at) {
+    return PlyParser(path.string(), mesh_io::read_file(path, mentioned_at, limits.max_file_bytes), limits)
+        .parse();
 }
 
 }  // namespace glint
