@@ -37,6 +37,8 @@ using std::chrono::milliseconds;
 
 // An idle stream writes a comment this often, which is also how a closed browser tab is noticed.
 constexpr auto kKeepAliveComment = std::chrono::seconds(2);
+// Large answers (frames, the PNG) are written this much at a time.
+constexpr size_t kWriteSlice = 64 * 1024;
 // Waits are cut into slices this long, so that stop() is noticed promptly.
 constexpr milliseconds kWaitSlice{100};
 // After refusing a request, the rest of what the client sent is read (and dropped) for at most this
@@ -671,15 +673,22 @@ struct PreviewServer::Impl {
                   }));
 
         http.Get("/api/image.png", guarded([this](const httplib::Request&, httplib::Response& res) {
-                     const auto frame = session.latest_frame();
+                     auto frame = session.latest_frame();
                      if (!frame) {
                          send_error(res, 503, "no image yet");
                          return;
                      }
                      res.set_header("Cache-Control", "no-store");
                      res.set_header("Content-Disposition", "attachment; filename=\"glint.png\"");
-                     res.set_content(reinterpret_cast<const char*>(frame->png.data()), frame->png.size(),
-                                     "image/png");
+                     // Written from the frame itself, a slice at a time: no copy per download.
+                     const size_t size = frame->png.size();
+                     res.set_content_provider(
+                         size, "image/png",
+                         [frame = std::move(frame)](size_t offset, size_t length, httplib::DataSink& sink) {
+                             const size_t slice = std::min(length, kWriteSlice);
+                             return sink.write(reinterpret_cast<const char*>(frame->png.data()) + offset,
+                                               slice);
+                         });
                  }));
 
         http.Get("/api/scene.yaml", guarded([this](const httplib::Request&, httplib::Response& res) {
@@ -742,7 +751,14 @@ struct PreviewServer::Impl {
             return sink.write(ping, sizeof(ping) - 1);
         }
         seen = frame->id;
-        return sink.write(frame->event.data(), frame->event.size());
+        // In slices: httplib copies each write twice to frame it as a chunk, and a frame of a large
+        // image is megabytes, to every stream at once.
+        for (size_t at = 0; at < frame->event.size(); at += kWriteSlice) {
+            if (!sink.write(frame->event.data() + at, std::min(kWriteSlice, frame->event.size() - at))) {
+                return false;
+            }
+        }
+        return true;
     }
 };
 
