@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cstdlib>
 #include <functional>
+#include <random>
 #include <string>
 
 #include "glint/scene/scene_desc.hpp"
@@ -287,6 +288,68 @@ TEST(SceneEdit, ALoadedScenePastAPreviewLimitIsRefusedAtItsLine) {
                   std::string::npos)
             << e.message();
     }
+}
+
+// What the fuzz harness relies on: whatever the body, apply_edit_request either returns or throws
+// EditError (or a subclass) or SceneError. A fixed seed keeps this test the same on every run.
+TEST(SceneEdit, MutatedRequestsOnlyEverThrowTypedErrors) {
+    const SceneDesc loaded = scene_with_a_texture();
+    const std::vector<std::string> seeds = {
+        R"({"edits": [{"path": ["camera", "fov"], "value": 20}, {"path": ["render", "max_depth"], "value": 7}]})",
+        R"({"path": ["materials", "a", "albedo", "file"], "value": "wood"})",
+        R"({"path": ["materials", "b", "albedo"], "value": [0.1, 0.2, 0.3]})",
+        R"({"path": ["render", "width"], "value": 4096})",
+    };
+    const std::vector<std::string> tokens = {"[",
+                                             "]",
+                                             "{",
+                                             "}",
+                                             ",",
+                                             ":",
+                                             "\"file\"",
+                                             "\"image\"",
+                                             "null",
+                                             "1e308",
+                                             "-1",
+                                             "1e999",
+                                             "\"\\u0000\"",
+                                             "\"materials\"",
+                                             "\"render\"",
+                                             "\"max_depth\"",
+                                             "99999999999999999999",
+                                             "\"\xc3\""};
+    std::mt19937 random(12345);
+    int returned = 0, refused = 0;
+    const auto start = std::chrono::steady_clock::now();
+    for (int i = 0; i < 3000; ++i) {
+        std::string body = seeds[random() % seeds.size()];
+        for (int m = 0, n = 1 + static_cast<int>(random() % 4); m < n && !body.empty(); ++m) {
+            const size_t at = random() % body.size();
+            switch (random() % 3) {
+                case 0:
+                    body.erase(at, 1 + random() % 4);
+                    break;
+                case 1:
+                    body.insert(at, tokens[random() % tokens.size()]);
+                    break;
+                default:
+                    body[at] = static_cast<char>(random() % 256);
+            }
+        }
+        try {
+            apply_edit_request(loaded, body);
+            ++returned;
+        } catch (const EditError&) {
+            ++refused;
+        } catch (const SceneError&) {
+            ++refused;
+        } catch (const std::exception& e) {
+            ADD_FAILURE() << "untyped error " << e.what() << " for " << body;
+        }
+    }
+    EXPECT_GT(returned, 0);
+    EXPECT_GT(refused, 0);
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0);
 }
 
 TEST(ServeCommand, ABadSceneExitsWithTwoAndAMessage) {
