@@ -1,5 +1,6 @@
 // `glint serve [SCENE] [--port 8080] [--host 127.0.0.1]`: renders the scene progressively and shows it
 // in the browser, with controls that edit the scene description.
+#include <atomic>
 #include <csignal>
 #include <iostream>
 #include <thread>
@@ -31,8 +32,12 @@ int run_serve(const ServeOptions& options) {
         server = std::make_unique<glint::PreviewServer>(
             desc, options.scene_path.empty() ? "default scene" : options.scene_path);
     } catch (const glint::SceneError& e) {
+        // Also a scene past the preview's limits (glint::preview_limits), at the offending value.
         std::cerr << e.what() << '\n';
         return kExitBadInput;
+    } catch (const std::exception& e) {
+        std::cerr << "glint: error: " << e.what() << '\n';
+        return 1;
     }
     int port = 0;
     try {
@@ -52,8 +57,16 @@ int run_serve(const ServeOptions& options) {
 
     std::signal(SIGINT, request_stop);
     std::signal(SIGTERM, request_stop);
-    std::thread http([&] { server->run(); });
-    while (!g_stop_requested) {
+    std::atomic<bool> server_ended{false};
+    std::thread http([&] {
+        try {
+            server->run();
+        } catch (const std::exception& e) {
+            std::cerr << "glint: error: " << e.what() << '\n';
+        }
+        server_ended = true;  // the server is gone: leave too, instead of waiting for Ctrl-C
+    });
+    while (!g_stop_requested && !server_ended) {
         std::this_thread::sleep_for(std::chrono::milliseconds(100));
     }
     std::cout << "glint: stopping" << std::endl;

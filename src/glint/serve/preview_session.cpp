@@ -5,6 +5,7 @@
 #include "glint/image/image_io.hpp"
 #include "glint/render/progressive.hpp"
 #include "glint/scene/scene_writer.hpp"
+#include "glint/serve/serve_limits.hpp"
 
 namespace glint {
 
@@ -36,14 +37,21 @@ std::string base64(const std::vector<unsigned char>& bytes) {
     return out;
 }
 
+// Builds a scene for the preview. The tree was checked against the preview limits already; the built
+// settings are checked again so that no reading of a value (a conversion, a default) gets past them.
 std::shared_ptr<const Scene> build_checked(const SceneDesc& desc) {
     Scene scene = build_scene(desc);
-    const std::int64_t pixels = static_cast<std::int64_t>(scene.settings.width) * scene.settings.height;
-    if (pixels > PreviewSession::kMaxPixels) {
+    const RenderSettings& s = scene.settings;
+    const std::int64_t pixels = static_cast<std::int64_t>(s.width) * s.height;
+    if (pixels > preview_limits::kMaxPixels || s.width > preview_limits::kMaxSide ||
+        s.height > preview_limits::kMaxSide || s.samples_per_pixel > preview_limits::kMaxSamples ||
+        s.max_depth > preview_limits::kMaxDepth) {
         const Node* render = desc.root.find("render");
-        throw SceneError(
-            render ? render->pos : desc.root.pos,
-            "the preview renders at most 4096 × 4096 pixels; render larger images with glint render");
+        throw SceneError(render ? render->pos : desc.root.pos,
+                         "the preview renders at most " + std::to_string(preview_limits::kMaxSide) +
+                             " pixels a side, " + std::to_string(preview_limits::kMaxPixels) + " pixels, " +
+                             std::to_string(preview_limits::kMaxSamples) + " samples and depth " +
+                             std::to_string(preview_limits::kMaxDepth) + "; use glint render beyond that");
     }
     return std::make_shared<const Scene>(std::move(scene));
 }
@@ -51,10 +59,16 @@ std::shared_ptr<const Scene> build_checked(const SceneDesc& desc) {
 }  // namespace
 
 PreviewSession::PreviewSession(const SceneDesc& desc, std::string display_name)
-    : display_name_(std::move(display_name)), base_dir_(desc.base_dir) {
+    : display_name_(std::move(display_name)),
+      base_dir_(desc.base_dir),
+      loaded_files_(file_references(desc.root)) {
+    // The user's own file, so its errors point into it.
+    if (const auto violation = find_limit_violation(desc.root)) {
+        throw SceneError(violation->node ? violation->node->pos : desc.root.pos, violation->message);
+    }
     root_ = desc.root;
     yaml_ = write_scene_yaml(root_);
-    scene_ = build_checked(desc);  // the user's own file, so its errors point into it
+    scene_ = build_checked(desc);
     render_thread_ = std::thread([this] { render_loop(); });
 }
 
@@ -75,20 +89,29 @@ void PreviewSession::stop() {
 
 std::uint64_t PreviewSession::apply(const std::vector<SceneEdit>& edits) {
     std::lock_guard edit_lock(edit_mutex_);
-    Node root;
+    SceneDesc current;
     {
         std::lock_guard lock(mutex_);
-        root = root_;
+        current.root = root_;
     }
-    apply_edits(root, edits);
-    std::string yaml = write_scene_yaml(root);
-    const SceneDesc desc = parse_scene_text(yaml, "<scene in the browser>", base_dir_);
-    std::shared_ptr<const Scene> scene = build_checked(desc);
+    current.base_dir = base_dir_;
+    return commit(apply_checked_edits(current, edits, loaded_files_));
+}
+
+std::uint64_t PreviewSession::apply_request(std::string_view request_body) {
+    // Parsed before taking the edit lock: a bad body costs no waiting for another edit's build.
+    const std::vector<SceneEdit> edits = parse_edits(parse_request_json(request_body));
+    return apply(edits);
+}
+
+// Called with edit_mutex_ held.
+std::uint64_t PreviewSession::commit(EditedScene edited) {
+    std::shared_ptr<const Scene> scene = build_checked(edited.desc);
     std::uint64_t generation = 0;
     {
         std::lock_guard lock(mutex_);
-        root_ = desc.root;
-        yaml_ = std::move(yaml);
+        root_ = std::move(edited.desc.root);
+        yaml_ = std::move(edited.yaml);
         scene_ = std::move(scene);
         generation = generation_.load() + 1;
         generation_ = generation;  // the render thread's cancel check sees this at its next tile
@@ -222,6 +245,10 @@ void PreviewSession::render_loop() {
             std::lock_guard lock(mutex_);
             status_ = {generation, std::string("render failed: ") + e.what()};
             progressive.reset();  // nothing in progress: the loop waits for the next change
+        } catch (...) {
+            std::lock_guard lock(mutex_);
+            status_ = {generation, "render failed"};
+            progressive.reset();
         }
     }
 }

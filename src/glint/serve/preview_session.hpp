@@ -13,7 +13,9 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <set>
 #include <string>
+#include <string_view>
 #include <thread>
 #include <vector>
 
@@ -45,19 +47,20 @@ struct PreviewStatus {
 
 class PreviewSession {
   public:
-    // Images larger than this many pixels are refused: the preview keeps a film and a PNG of them.
-    static constexpr std::int64_t kMaxPixels = 4096 * 4096;
-
-    // Builds the scene (throws SceneError) and starts the render thread.
+    // Builds the scene and starts the render thread. Throws SceneError, also for a value past the
+    // preview's limits (serve_limits.hpp), at that value's position.
     PreviewSession(const SceneDesc& desc, std::string display_name);
     ~PreviewSession();
     PreviewSession(const PreviewSession&) = delete;
     PreviewSession& operator=(const PreviewSession&) = delete;
 
-    // Applies the edits to a copy of the description, writes it as YAML, parses and builds that (so any
+    // Applies the edits to a copy of the description (apply_checked_edits: no file the loaded scene
+    // does not refer to, no value past the limits), writes it as YAML, parses and builds that (so any
     // error points at a line of the YAML), and on success makes it current and restarts the render.
-    // Throws EditError or SceneError and leaves everything as it was.
+    // Throws EditError (or a subclass) or SceneError and leaves everything as it was.
     std::uint64_t apply(const std::vector<SceneEdit>& edits);
+    // The same from a request body (apply_edit_request).
+    std::uint64_t apply_request(std::string_view request_body);
 
     struct State {
         std::uint64_t generation;
@@ -92,8 +95,11 @@ class PreviewSession {
     void publish(const Image& image, std::uint64_t generation, std::uint32_t samples, std::uint32_t target,
                  double mrays, double seconds);
 
+    std::uint64_t commit(EditedScene edited);
+
     std::string display_name_;
     std::filesystem::path base_dir_;
+    std::set<std::string> loaded_files_;  // the files the loaded scene refers to: all an edit may use
 
     mutable std::mutex mutex_;  // guards everything below that is not atomic
     mutable std::condition_variable changed_;

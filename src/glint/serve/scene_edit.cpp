@@ -5,14 +5,18 @@
 #include <cmath>
 #include <cstdlib>
 
+#include "glint/render/settings.hpp"
+#include "glint/scene/scene_writer.hpp"
+#include "glint/serve/serve_limits.hpp"
+
 namespace glint {
 
 namespace {
 
-constexpr size_t kMaxEdits = 64;
-constexpr size_t kMaxPathLength = 8;
-constexpr size_t kMaxListLength = 16;
-constexpr size_t kMaxWordLength = 64;
+using preview_limits::kMaxEdits;
+using preview_limits::kMaxListLength;
+using preview_limits::kMaxPathLength;
+using preview_limits::kMaxWordLength;
 
 const std::array<const char*, 4> kEditableSections = {"render", "camera", "background", "materials"};
 
@@ -37,6 +41,19 @@ std::optional<nlohmann::ordered_json> scalar_number(const std::string& text) {
         return nlohmann::ordered_json(value);
     }
     return std::nullopt;
+}
+
+// At most kMaxWordLength bytes of `s` for a message, cut at a character boundary (the JSON reply must be
+// valid UTF-8) and marked when cut.
+std::string shown(const std::string& s, size_t max_bytes = kMaxWordLength) {
+    if (s.size() <= max_bytes) {
+        return s;
+    }
+    size_t end = max_bytes;
+    while (end > 0 && (static_cast<unsigned char>(s[end]) & 0xC0) == 0x80) {
+        --end;  // s[end] continues a multi-byte character: cut before that character
+    }
+    return s.substr(0, end) + "…";
 }
 
 bool is_word(const std::string& s) {
@@ -84,7 +101,7 @@ Node value_node(const nlohmann::json& value, const std::string& where) {
             throw EditError(where +
                             ": a text value must be one word of letters, digits, '_' or '-' (a name such as "
                             "'jittered'), not '" +
-                            s.substr(0, kMaxWordLength) + "'");
+                            shown(s) + "'");
         }
         return scalar_node(s);
     }
@@ -271,6 +288,164 @@ void apply_edits(Node& root, const std::vector<SceneEdit>& edits) {
             node->items.push_back(*edit.value);
         }
     }
+}
+
+FileReferenceError::FileReferenceError() : EditError(kFileReferenceRefused) {}
+
+nlohmann::json parse_request_json(std::string_view body) {
+    if (body.size() > preview_limits::kMaxRequestBodyBytes) {
+        throw RequestTooLargeError("the request body has " + std::to_string(body.size()) +
+                                   " bytes; at most " + std::to_string(preview_limits::kMaxRequestBodyBytes) +
+                                   " are accepted");
+    }
+    // The parser itself keeps its nesting on the heap, but everything that walks the result (copies,
+    // dump, comparisons) recurses: refuse deep nesting while parsing, before the value exists.
+    const auto depth_check = [](int depth, nlohmann::json::parse_event_t event, nlohmann::json&) {
+        if ((event == nlohmann::json::parse_event_t::object_start ||
+             event == nlohmann::json::parse_event_t::array_start) &&
+            depth >= preview_limits::kMaxJsonDepth) {
+            throw EditError("the request is nested more than " +
+                            std::to_string(preview_limits::kMaxJsonDepth) +
+                            " levels deep; an edit request needs 4");
+        }
+        return true;
+    };
+    try {
+        return nlohmann::json::parse(body.begin(), body.end(), depth_check);
+    } catch (const nlohmann::json::exception& e) {
+        // "[json.exception.parse_error.101] parse error at line 1, column 5: …": keep what follows the
+        // tag, shortened (it may quote the input).
+        const std::string what = e.what();
+        const size_t tag_end = what.find("] ");
+        throw EditError("the request body is not valid JSON: " +
+                        shown(tag_end == std::string::npos ? what : what.substr(tag_end + 2), 200));
+    }
+}
+
+namespace {
+
+void collect_file_references(const Node& node, std::set<std::string>& out) {
+    if (node.is_map()) {
+        for (size_t i = 0; i < node.items.size(); ++i) {
+            const Node& value = node.items[i];
+            for (const std::string_view key : kFileKeys) {
+                if (node.keys[i] == key) {
+                    out.insert(value.is_scalar() ? value.scalar : node_to_json(value).dump());
+                }
+            }
+            collect_file_references(value, out);
+        }
+    } else if (node.is_sequence()) {
+        for (const Node& item : node.items) {
+            collect_file_references(item, out);
+        }
+    }
+}
+
+// A scalar that reads as a finite number, as the scene builder reads numbers; nullopt otherwise.
+std::optional<double> finite_number(const Node* node) {
+    if (!node || !node->is_scalar() || node->scalar.empty()) {
+        return std::nullopt;
+    }
+    const char* begin = node->scalar.data();
+    const char* end = begin + node->scalar.size();
+    if (*begin == '+') {
+        ++begin;
+    }
+    double value = 0;
+    const auto [ptr, ec] = std::from_chars(begin, end, value);
+    if (ec != std::errc() || ptr != end || !std::isfinite(value)) {
+        return std::nullopt;
+    }
+    return value;
+}
+
+std::string number_for_message(double value) {
+    return number_text(nlohmann::json(value));
+}
+
+}  // namespace
+
+std::set<std::string> file_references(const Node& root) {
+    std::set<std::string> references;
+    collect_file_references(root, references);
+    return references;
+}
+
+void check_file_references(const Node& root, const std::set<std::string>& allowed) {
+    for (const std::string& reference : file_references(root)) {
+        if (allowed.count(reference) == 0) {
+            throw FileReferenceError();  // the same words for every name: nothing about the file leaks
+        }
+    }
+}
+
+std::optional<LimitViolation> find_limit_violation(const Node& root) {
+    const Node* render = root.is_map() ? root.find("render") : nullptr;
+    if (render && !render->is_map()) {
+        render = nullptr;  // the builder says what is wrong with it
+    }
+    for (const preview_limits::NumericLimit& limit : preview_limits::kNumericLimits) {
+        const Node* section = root.is_map() ? root.find(std::string(limit.section)) : nullptr;
+        const Node* node = section && section->is_map() ? section->find(std::string(limit.key)) : nullptr;
+        const auto value = finite_number(node);
+        if (value && *value > static_cast<double>(limit.maximum)) {
+            const std::string key = std::string(limit.section) + "." + std::string(limit.key);
+            return LimitViolation{key, node, *value, limit.maximum,
+                                  key + " is " + number_for_message(*value) +
+                                      "; the preview allows at most " + std::to_string(limit.maximum) +
+                                      " (render beyond that with glint render)"};
+        }
+    }
+    // Width and height are each within kMaxSide here; their product must fit kMaxPixels too.
+    const RenderSettings defaults;
+    const Node* width_node = render ? render->find("width") : nullptr;
+    const Node* height_node = render ? render->find("height") : nullptr;
+    const auto width = width_node ? finite_number(width_node) : std::optional<double>(defaults.width);
+    const auto height = height_node ? finite_number(height_node) : std::optional<double>(defaults.height);
+    if (width && height && *width > 0 && *height > 0 &&
+        *width * *height > static_cast<double>(preview_limits::kMaxPixels)) {
+        const double pixels = *width * *height;
+        return LimitViolation{"render.width × render.height", width_node ? width_node : height_node, pixels,
+                              preview_limits::kMaxPixels,
+                              "render.width × render.height is " + number_for_message(*width) + " × " +
+                                  number_for_message(*height) + " = " + number_for_message(pixels) +
+                                  " pixels; the preview renders at most " +
+                                  std::to_string(preview_limits::kMaxPixels) +
+                                  " (2048 × 2048; render larger images with glint render)"};
+    }
+    return std::nullopt;
+}
+
+EditedScene apply_checked_edits(const SceneDesc& scene, const std::vector<SceneEdit>& edits,
+                                const std::set<std::string>& allowed_files) {
+    Node root = scene.root;
+    apply_edits(root, edits);
+    // Checked on the whole edited tree, not on the edits: whatever path and value an edit takes, the
+    // scene that is built refers to no other file, and no value past a limit.
+    check_file_references(root, allowed_files);
+    if (const auto violation = find_limit_violation(root)) {
+        throw PreviewLimitError(violation->key, violation->value, violation->maximum, violation->message);
+    }
+    EditedScene edited;
+    edited.yaml = write_scene_yaml(root);
+    edited.desc = parse_scene_text(edited.yaml, "<scene in the browser>", scene.base_dir);
+    // What was parsed back is what gets built: check it again (a writer that changed a value would
+    // otherwise slip past the checks above).
+    check_file_references(edited.desc.root, allowed_files);
+    if (const auto violation = find_limit_violation(edited.desc.root)) {
+        throw PreviewLimitError(violation->key, violation->value, violation->maximum, violation->message);
+    }
+    return edited;
+}
+
+EditedScene apply_edit_request(const SceneDesc& scene, std::string_view request_body,
+                               const std::set<std::string>& allowed_files) {
+    return apply_checked_edits(scene, parse_edits(parse_request_json(request_body)), allowed_files);
+}
+
+EditedScene apply_edit_request(const SceneDesc& scene, std::string_view request_body) {
+    return apply_edit_request(scene, request_body, file_references(scene.root));
 }
 
 }  // namespace glint
