@@ -186,7 +186,7 @@ TEST_F(PreviewServerTest, MalformedRequestsGetA4xxWithAMessage) {
         {R"({"path": ["render", "sampler"], "value": "jitterd"})", "application/json", 422,
          "did you mean 'jittered'"},
         {R"({"edits": [{"path": ["render", "width"], "value": 30000}, {"path": ["render", "height"], "value": 30000}]})",
-         "application/json", 422, "pixels"},
+         "application/json", 422, "at most 4096"},
         {R"({"path": ["render", "width"], "value": -5})", "application/json", 422, "render"},
         {R"({"path": ["render", "widht"], "value": 5})", "application/json", 422, "did you mean 'width'"},
         {R"({"edits": []})", "application/json", 400, "non-empty"},
