@@ -1,8 +1,10 @@
 // Reading and writing images. Writers are atomic: the bytes go to a temporary file beside the target,
 // which is renamed over it only once complete, so a crash or a full disk never leaves half an image
-// under the user's name.
+// under the user's name. Readers check every header against the limits below and against
+// the file's length before they allocate anything from it.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <stdexcept>
@@ -12,6 +14,24 @@
 #include "glint/image/image.hpp"
 
 namespace glint {
+
+// The largest image glint reads, whatever the format. A file that declares more is refused before
+// anything is allocated from its header, so a tiny hostile file cannot ask for gigabytes.
+// - kMaxImageSide: 32768 = 2¹⁵ pixels a side. The largest panoramas published for rendering are 16K × 8K
+//   (16384 × 8192); this leaves room for twice that width.
+// - kMaxImagePixels: 2²⁸ = 268 435 456 pixels (16384 × 16384). As linear float RGB that is already
+//   3 GiB, about as much as a workstation can spend on one texture; stb_image's own int arithmetic also
+//   stops near 2³¹ bytes (2²⁸ pixels of four 16-bit channels).
+inline constexpr std::int64_t kMaxImageSide = 32768;
+inline constexpr std::int64_t kMaxImagePixels = std::int64_t{1} << 28;
+// An OpenEXR file is decoded with all its channels (a render's AOVs come along with R, G and B): its
+// samples (channels × pixels, four bytes each once decoded) are limited to four channels at the pixel
+// limit, 2³⁰ samples = 4 GiB.
+inline constexpr std::int64_t kMaxExrSamples = 4 * kMaxImagePixels;
+// A file is read into memory whole, once, so that the header checks and the decoder see the same bytes.
+// 5 GiB is more than any image within the limits needs (an uncompressed EXR at kMaxExrSamples is 4 GiB
+// plus its tables); a larger file is refused before it is read.
+inline constexpr std::uint64_t kMaxImageFileBytes = std::uint64_t{5} << 30;
 
 enum class ImageFormat { Png, Pfm, Exr };
 
@@ -34,13 +54,20 @@ std::vector<unsigned char> encode_png(const Image& image);
 std::vector<unsigned char> encode_pfm(const Image& image);
 std::vector<unsigned char> encode_exr(const Image& image);
 
-// Reads a PFM written by encode_pfm (or any 3-channel PFM); throws std::runtime_error otherwise.
+// Reads a PFM file: colour ("PF") as it is, grey ("Pf") with its value in all three channels. Throws
+// std::runtime_error naming the file and what is wrong otherwise.
 Image read_pfm(const std::filesystem::path& path);
+// The same, from bytes already in memory; `name` is the file name used in error messages.
+Image decode_pfm(const std::vector<unsigned char>& bytes, const std::string& name);
 
-// Reads an image as linear RGB: PNG, JPEG, BMP, TGA (8 or 16 bit, sRGB-decoded) and Radiance HDR through
-// stb_image, OpenEXR through tinyexr and PFM (all three already linear). Throws std::runtime_error with
-// the reason when the file is missing or unreadable.
+// Reads an image as linear RGB, choosing the decoder by the file's first bytes (not its extension):
+// PNG, JPEG, BMP, TGA and binary PGM/PPM (8 or 16 bit, sRGB-decoded) and Radiance HDR through stb_image,
+// OpenEXR through tinyexr and PFM (HDR, EXR and PFM already linear). Throws std::runtime_error, whose message
+// names the file, when it is missing, unreadable, of another format, larger than the limits above or
+// shorter than its header says.
 Image read_image(const std::filesystem::path& path);
+// The same, from a file's bytes already in memory; `name` is the file name used in error messages.
+Image decode_image(const std::vector<unsigned char>& bytes, const std::string& name);
 
 // The sRGB transfer function's inverse (IEC 61966-2-1): an encoded value in [0, 1] to linear.
 double srgb_to_linear(double encoded);
