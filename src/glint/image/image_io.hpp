@@ -1,6 +1,6 @@
 // Reading and writing images. Writers are atomic: the bytes go to a temporary file beside the target,
-// which is renamed over it only once complete, so a crash or a full disk never leaves half an image
-// under the user's name. Readers check every header against the limits below and against
+// which is flushed to disk and renamed over it only once complete, so a crash or a full disk never leaves
+// half an image under the user's name. Readers check every header against the limits below and against
 // the file's length before they allocate anything from it.
 #pragma once
 
@@ -49,6 +49,13 @@ struct ImageWriteError : std::runtime_error {
 // .exr  32-bit float linear RGB, exactly what the film holds.
 void write_image(const Image& image, const std::filesystem::path& path);
 
+// Checks, before a render starts, that write_image(…, path) can succeed as far as the file system goes:
+// throws ImageWriteError naming the path and the reason when the extension is unknown, the path is a
+// folder, its folder is missing or is not a folder, the name is too long (NAME_MAX / PATH_MAX) or the
+// folder is not writable. The last is tested by creating and removing a file there: permission bits
+// do not tell (root ignores them; read-only mounts, ACLs and quotas are not in them).
+void check_output_path(const std::filesystem::path& path);
+
 // Encoders into memory, for the atomic writer and for tests.
 std::vector<unsigned char> encode_png(const Image& image);
 std::vector<unsigned char> encode_pfm(const Image& image);
@@ -72,8 +79,22 @@ Image decode_image(const std::vector<unsigned char>& bytes, const std::string& n
 // The sRGB transfer function's inverse (IEC 61966-2-1): an encoded value in [0, 1] to linear.
 double srgb_to_linear(double encoded);
 
-// Writes bytes to `path` atomically (temporary file + rename).
+// Writes bytes to `path` atomically: a temporary file in the same folder, written, fsync'ed, renamed
+// over `path`, then the folder fsync'ed (best effort). Throws ImageWriteError on failure and leaves no
+// temporary file behind.
 void write_file_atomically(const std::filesystem::path& path, const std::vector<unsigned char>& bytes);
+
+// Removes the temporary files being written at this moment (by write_file_atomically or
+// check_output_path), for a SIGINT/SIGTERM handler: a process killed mid-write then leaves nothing
+// behind. Async-signal-safe: it reads only lock-free atomics and fixed static buffers and calls only
+// unlink(2). Never throws.
+void remove_pending_temporary_files() noexcept;
+
+namespace test_hooks {
+// A test seam: when set, write_file_atomically calls it once the temporary file is complete and
+// registered, just before the rename, with the temporary file's path.
+extern void (*after_temporary_file_written)(const std::filesystem::path& temporary);
+}  // namespace test_hooks
 
 // Linear → sRGB-encoded byte, clamping to [0, 1].
 unsigned char linear_to_srgb8(float linear);
