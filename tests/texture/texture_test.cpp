@@ -2,6 +2,7 @@
 // noise's known properties (zero on the lattice, bounded, deterministic).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -124,11 +125,39 @@ TEST(ImageTexture, EightBitFilesAreSrgbDecoded) {
     std::filesystem::remove(path);
 }
 
+TEST(ImageTexture, SixteenBitGreyPgmTexture) {
+    // A 2 × 1 binary PGM, maxval 65535, big-endian samples 65535 and 32768: white, and 32768/65535
+    // sRGB-decoded, in all three channels. stb_image 2.27 used to hand back half the buffer glint then
+    // read (the second texel came from past its end: a heap overflow under the sanitizers), and its
+    // samples byte-swapped (32768 = 0x8000 would read as 128).
+    const auto path = temp_file("grey16.pgm");
+    std::ofstream(path, std::ios::binary) << std::string("P5\n2 1\n65535\n\xff\xff\x80\x00", 17);
+    const ImageTexture texture(read_image(path));
+    const double grey = std::pow((32768.0 / 65535 + 0.055) / 1.055, 2.4);  // ≈ 0.2140
+    expect_rgb_near(texture.lookup({0.25, 0.5}), {1, 1, 1}, 1e-6);
+    expect_rgb_near(texture.lookup({0.75, 0.5}), {grey, grey, grey}, 1e-6);
+    expect_rgb_near(texture.lookup({0.5, 0.5}), {(1 + grey) / 2, (1 + grey) / 2, (1 + grey) / 2},
+                    1e-6);  // halfway between the texel centres
+    EXPECT_NEAR(texture.max_value(), 1.0, 1e-6);
+    EXPECT_NEAR(texture.min_value(), grey, 1e-6);
+    std::filesystem::remove(path);
+}
+
 TEST(ImageTexture, MissingOrUnreadableFilesAreErrors) {
     EXPECT_THROW(read_image(temp_file("does-not-exist.png")), std::runtime_error);
     const auto path = temp_file("not-an-image.png");
     std::ofstream(path) << "this is text";
     EXPECT_THROW(read_image(path), std::runtime_error);
+    // A tiny file declaring a huge image: refused with the file's name and the limit, not allocated.
+    std::ofstream(path, std::ios::binary) << "P5\n100000 100000\n255\n";
+    try {
+        read_image(path);
+        ADD_FAILURE() << "read";
+    } catch (const std::runtime_error& e) {
+        EXPECT_NE(std::string(e.what()).find(path.string() + ": PNM header declares 100000 x 100000 pixels"),
+                  std::string::npos)
+            << e.what();
+    }
     std::filesystem::remove(path);
 }
 

@@ -115,8 +115,8 @@ std::unique_ptr<Light> EnvironmentLight::create(Params& params, const BuildConte
         try {
             image = read_image(file);
         } catch (const std::runtime_error& e) {
-            params.fail("image",
-                        std::string("cannot read ").append(file.string()).append(": ").append(e.what()));
+            // The reader's message starts with the file's path.
+            params.fail("image", std::string("cannot read environment image: ") + e.what());
         }
         for (float& v : image.rgb) {
             if (!std::isfinite(v) || v < 0) {

@@ -1,5 +1,6 @@
 // Image {type: image, file: x.png}: `file` resolves against the scene file's folder. 8- and 16-bit files
-// are sRGB-decoded; HDR and EXR are taken as linear. A missing or unreadable file is an error at `file`.
+// are sRGB-decoded; HDR, EXR and PFM are taken as linear. A missing, unreadable, oversized or truncated
+// file is an error at `file` (read_image checks the header before decoding).
 #include "glint/texture/image_texture.hpp"
 
 #include <algorithm>
@@ -51,7 +52,8 @@ std::shared_ptr<const Texture> ImageTexture::create(Params& params, const BuildC
     try {
         image = read_image(path);
     } catch (const std::exception& e) {
-        params.fail("file", "cannot read texture image '" + path.string() + "': " + e.what());
+        // The reader's message starts with the file's path.
+        params.fail("file", std::string("cannot read texture image: ") + e.what());
     }
     if (image.width <= 0 || image.height <= 0) {
         params.fail("file", "texture image '" + path.string() + "' has no pixels");
