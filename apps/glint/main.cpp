@@ -1,7 +1,14 @@
 // glint: the command-line tool. Thin by design: it parses flags and calls the library.
 //
-// Exit codes: 0 success; 2 bad input (scene file, flags, output path); 1 anything else.
+// Exit codes: 0 success; 2 bad input (scene file, flags, output path); 130 interrupted (Ctrl-C; the
+// image reached so far is written on the first one); 143 terminated (SIGTERM); 1 anything else (a
+// failed write, out of memory, an internal error). Nothing escapes main(): every exception becomes a
+// message and one of these codes.
 #include <unistd.h>
+
+#include <atomic>
+#include <csignal>
+#include <new>
 
 #include <CLI/CLI.hpp>
 #include <chrono>
@@ -20,6 +27,36 @@
 namespace {
 
 constexpr int kExitBadInput = 2;
+constexpr int kExitInterrupted = 128 + SIGINT;
+
+// Ctrl-C during a render: the first asks the render to stop after its current pass (and the image so
+// far to be written); a second, or SIGTERM, ends the process at once. Only async-signal-safe calls in
+// the handler: a lock-free atomic store, write(2), and _exit(2).
+std::atomic<bool> g_stop_after_pass{false};
+volatile std::sig_atomic_t g_interrupts = 0;
+
+extern "C" void on_stop_signal(int signal) {
+    if (signal == SIGINT && g_interrupts == 0) {
+        g_interrupts = 1;
+        g_stop_after_pass.store(true);
+        static const char message[] =
+            "\nglint: stopping after this pass to write the image so far "
+            "(Ctrl-C again to quit without writing)\n";
+        [[maybe_unused]] const auto written = ::write(STDERR_FILENO, message, sizeof(message) - 1);
+        return;
+    }
+    glint::remove_pending_temporary_files();  // a half-written image must not stay behind
+    ::_exit(128 + signal);
+}
+
+void install_stop_handlers() {
+    static_assert(std::atomic<bool>::is_always_lock_free, "the signal handler needs a lock-free flag");
+    struct sigaction action {};
+    action.sa_handler = on_stop_signal;
+    sigemptyset(&action.sa_mask);
+    ::sigaction(SIGINT, &action, nullptr);
+    ::sigaction(SIGTERM, &action, nullptr);
+}
 
 // A progress bar on stderr: percentage, elapsed time and an estimate of the time left.
 class ProgressBar {
@@ -84,16 +121,13 @@ int run_render(const RenderOptions& options) {
                      ? "default.png"
                      : std::filesystem::path(options.scene_path).stem().string() + ".png";
     }
-    if (!glint::image_format_for(output)) {
-        return bad_input("cannot write '" + output.string() + "': unknown image format (use " +
-                         glint::supported_image_extensions() + ")");
-    }
-    const std::filesystem::path out_dir = output.has_parent_path() ? output.parent_path() : ".";
-    if (!std::filesystem::is_directory(out_dir)) {
-        return bad_input("cannot write '" + output.string() + "': the folder '" + out_dir.string() +
-                         "' does not exist");
+    try {
+        glint::check_output_path(output);
+    } catch (const glint::ImageWriteError& e) {
+        return bad_input(e.what());
     }
 
+    install_stop_handlers();
     glint::Scene scene;
     try {
         const glint::SceneDesc desc =
@@ -113,11 +147,16 @@ int run_render(const RenderOptions& options) {
         std::cerr << e.what() << '\n';
         return kExitBadInput;
     }
+    if (g_stop_after_pass.load()) {
+        std::cerr << "glint: interrupted before rendering; no image written\n";
+        return kExitInterrupted;
+    }
 
     glint::Film film(scene.settings.width, scene.settings.height);
     ProgressBar bar(!options.quiet && ::isatty(STDERR_FILENO));
     glint::RenderCallbacks callbacks;
     callbacks.progress = [&bar](double fraction) { bar.update(fraction); };
+    callbacks.stop_after_pass = &g_stop_after_pass;
     const glint::RenderStats stats = glint::render(scene, film, callbacks);
     bar.finish();
 
@@ -134,6 +173,12 @@ int run_render(const RenderOptions& options) {
         std::cerr << "glint: error: " << e.what() << '\n';
         return 1;
     }
+    if (stats.cancelled) {
+        // Each pixel is the mean of the samples it has: an unfinished render, not a darker one.
+        std::fprintf(stderr, "glint: interrupted: wrote %s with %u of %u samples per pixel\n",
+                     output.string().c_str(), stats.samples_per_pixel, scene.settings.samples_per_pixel);
+        return kExitInterrupted;
+    }
     if (!options.quiet) {
         std::fprintf(stderr, "glint: %dx%d, %u spp, %.2f s, %.2f M rays, %.2f Mrays/s -> %s\n",
                      scene.settings.width, scene.settings.height, stats.samples_per_pixel, stats.seconds,
@@ -144,7 +189,7 @@ int run_render(const RenderOptions& options) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+static int run(int argc, char** argv) {
     CLI::App app{"glint: a small, fast, correct ray tracer"};
     app.set_version_flag("--version", std::string("glint ") + GLINT_VERSION);
     app.require_subcommand(1);
@@ -214,4 +259,23 @@ int main(int argc, char** argv) {
         return run_render(options);
     }
     return 0;
+}
+
+int main(int argc, char** argv) {
+    try {
+        return run(argc, argv);
+    } catch (const glint::SceneError& e) {  // a command that let a scene error through: still bad input
+        std::cerr << e.what() << '\n';
+        return kExitBadInput;
+    } catch (const std::bad_alloc&) {
+        std::cerr << "glint: error: out of memory (the scene, image or sample count may be too large for "
+                     "this machine)\n";
+        return 1;
+    } catch (const std::exception& e) {
+        std::cerr << "glint: internal error: " << e.what() << '\n';
+        return 1;
+    } catch (...) {
+        std::cerr << "glint: internal error: an unknown exception\n";
+        return 1;
+    }
 }
