@@ -6,16 +6,39 @@
 namespace glint {
 
 std::shared_ptr<const SourceFile> SourceFile::from_text(std::string path, const std::string& text) {
+    return excerpt(std::move(path), 1, text);
+}
+
+std::shared_ptr<const SourceFile> SourceFile::excerpt(std::string path, int first_line,
+                                                      std::string_view lines) {
     auto file = std::make_shared<SourceFile>();
     file->path = std::move(path);
-    std::istringstream in(text);
-    for (std::string line; std::getline(in, line);) {
-        if (!line.empty() && line.back() == '\r') {
-            line.pop_back();
-        }
-        file->lines.push_back(std::move(line));
-    }
+    file->text = std::string(lines);
+    file->first_line = first_line;
     return file;
+}
+
+std::optional<std::string_view> SourceFile::line(int number) const {
+    if (number < first_line) {
+        return std::nullopt;
+    }
+    std::size_t start = 0;
+    for (int n = first_line; n < number; ++n) {
+        const std::size_t end = text.find('\n', start);
+        if (end == std::string::npos) {
+            return std::nullopt;
+        }
+        start = end + 1;
+    }
+    if (start >= text.size() && !(start == 0 && number == first_line && !text.empty())) {
+        return std::nullopt;  // past the last line (a final newline ends a line, it does not begin one)
+    }
+    std::size_t end = text.find('\n', start);
+    end = end == std::string::npos ? text.size() : end;
+    if (end > start && text[end - 1] == '\r') {
+        --end;
+    }
+    return std::string_view(text).substr(start, end - start);
 }
 
 std::string format_diagnostic(const SourcePos& pos, const std::string& message) {
@@ -28,17 +51,25 @@ std::string format_diagnostic(const SourcePos& pos, const std::string& message) 
         out << ' ';
     }
     out << "error: " << message;
-    if (pos.file && pos.line > 0 && pos.line <= static_cast<int>(pos.file->lines.size())) {
-        std::string text = pos.file->lines[static_cast<size_t>(pos.line - 1)];
-        // The column comes from the parser and may lie past the end of our copy of the line (a
-        // parser that counted characters of another encoding): keep it within the line.
-        int column = std::clamp(pos.column, 1, static_cast<int>(text.size()) + 1);
-        // A very long line (generated JSON, a minified file) is cut to a window around the column.
-        constexpr int kWindow = 100;
-        if (static_cast<int>(text.size()) > 2 * kWindow) {
-            const int start = std::max(0, column - 1 - kWindow / 2);
-            text = (start > 0 ? "..." : "") + text.substr(static_cast<size_t>(start), kWindow) + "...";
-            column = column - start + (start > 0 ? 3 : 0);
+    const std::optional<std::string_view> line =
+        pos.file && pos.line > 0 ? pos.file->line(pos.line) : std::optional<std::string_view>();
+    if (line) {
+        const std::string_view whole = *line;
+        // The column comes from the parser and may lie past the end of the line (a parser that
+        // counted characters of another encoding): keep it within the line.
+        const std::size_t column_in_line =
+            std::clamp<std::size_t>(static_cast<std::size_t>(std::max(pos.column, 1)), 1, whole.size() + 1);
+        // A very long line (generated JSON, a minified file, a mesh on one line) is cut to a window
+        // around the column before anything is copied.
+        constexpr std::size_t kWindow = 100;
+        std::string text;
+        std::size_t column = column_in_line;
+        if (whole.size() > 2 * kWindow) {
+            const std::size_t start = column_in_line - 1 > kWindow / 2 ? column_in_line - 1 - kWindow / 2 : 0;
+            text = (start > 0 ? "..." : "") + std::string(whole.substr(start, kWindow)) + "...";
+            column = column_in_line - start + (start > 0 ? 3 : 0);
+        } else {
+            text = std::string(whole);
         }
         // Control characters (a zero byte, an escape sequence) would garble the terminal: shown as '?'.
         for (char& c : text) {
@@ -48,8 +79,8 @@ std::string format_diagnostic(const SourcePos& pos, const std::string& message) 
         }
         out << "\n    " << text << "\n    ";
         // Keep tabs in the caret line so the caret sits under the right character.
-        for (int i = 0; i + 1 < column && i < static_cast<int>(text.size()); ++i) {
-            out << (text[static_cast<size_t>(i)] == '\t' ? '\t' : ' ');
+        for (std::size_t i = 0; i + 1 < column && i < text.size(); ++i) {
+            out << (text[i] == '\t' ? '\t' : ' ');
         }
         out << '^';
     }

@@ -2,18 +2,28 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace glint {
 
-// The text of a scene (or mesh) file, kept so that an error can quote the offending line.
+// The text of a scene (or mesh) file, kept so that an error can quote the offending line. The text is
+// held once, as it is: splitting it into lines up front cost 32 bytes a line (2 GiB for a 64 MiB file
+// of newlines), and a line is only looked for when an error is reported.
 struct SourceFile {
     std::string path;
-    std::vector<std::string> lines;
+    std::string text;    // the lines from first_line on (the whole file, or an excerpt)
+    int first_line = 1;  // the number of the first line of `text`
 
     static std::shared_ptr<const SourceFile> from_text(std::string path, const std::string& text);
+    // Only some lines of a file (say, the one line of a large mesh file an error is about).
+    static std::shared_ptr<const SourceFile> excerpt(std::string path, int first_line,
+                                                     std::string_view lines);
+    // Line `number` (1-based, without its end of line), or nullopt if the text does not hold it.
+    std::optional<std::string_view> line(int number) const;
 };
 
 // A 1-based line and column in a SourceFile. A default SourcePos means "no position known".

@@ -74,9 +74,13 @@ class ObjParser {
     [[noreturn]] void fail(std::size_t column, const std::string& message) const {
         // Positions are ints; a file within the size limit could have more lines or longer ones.
         constexpr std::uint64_t kIntMax = std::numeric_limits<int>::max();
-        const SourcePos pos{SourceFile::from_text(path_, text_),
-                            static_cast<int>(std::min<std::uint64_t>(line_number_, kIntMax)),
-                            static_cast<int>(std::min<std::uint64_t>(column + 1, kIntMax))};
+        // Only the offending line is kept for the report: the file may be gigabytes.
+        const std::size_t line_end = std::min(text_.find('\n', line_start_), text_.size());
+        const int line = static_cast<int>(std::min<std::uint64_t>(line_number_, kIntMax));
+        const SourcePos pos{
+            SourceFile::excerpt(path_, line,
+                                std::string_view(text_).substr(line_start_, line_end - line_start_)),
+            line, static_cast<int>(std::min<std::uint64_t>(column + 1, kIntMax))};
         throw SceneError(pos, message);
     }
     [[noreturn]] void fail(const Token& token, const std::string& message) const {
