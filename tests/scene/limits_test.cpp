@@ -1,6 +1,7 @@
 // Scene text is untrusted: each limit of docs/scene-format.md ("Limits") gives a positioned error, never
 // a crash, a hang or unbounded memory.
 #include <gtest/gtest.h>
+#include <pthread.h>
 #include <sys/stat.h>
 
 #include <filesystem>
@@ -33,7 +34,7 @@ TEST(SceneLimits, AnAliasInsideItsOwnAnchorIsAnError) {
     for (const std::string text :
          {"&a [*a]", "objects: &a [*a]\n", "a: &a {b: *a}\n", "a: &a {b: [1, {c: *a}]}\n"}) {
         const SceneError e = error_of(text);
-        EXPECT_TRUE(says(e, "contains it")) << e.what();
+        EXPECT_TRUE(says(e, "contains an alias of itself")) << e.what();
         EXPECT_EQ(e.position().line, 1) << e.what();
     }
 }
@@ -51,6 +52,17 @@ TEST(SceneLimits, AnAliasBombStopsAtTheValueLimit) {
     }
     const SceneError e = error_of(text);
     EXPECT_TRUE(says(e, "more than " + std::to_string(kMaxSceneValues) + " values")) << e.what();
+}
+
+TEST(SceneLimits, ALongTextRepeatedByAliasesStopsAtTheByteLimit) {
+    // 1 MiB repeated by 300 aliases: 300 MiB of strings from a file of 1 MiB and few values.
+    std::string text = "s: &s \"" + std::string(std::size_t{1} << 20, 'x') + "\"\na: [";
+    for (int i = 0; i < 300; ++i) {
+        text.append(i ? ", *s" : "*s");
+    }
+    text += "]\n";
+    const SceneError e = error_of(text);
+    EXPECT_TRUE(says(e, "more than " + std::to_string(kMaxSceneValueBytes) + " bytes")) << e.message();
 }
 
 TEST(SceneLimits, AliasesWithinTheLimitStillWork) {
@@ -156,12 +168,13 @@ TEST(SceneLimits, ImageSizeAndSamplesHaveUpperBounds) {
 }
 
 // Whitted's recursion runs as a loop: the deepest allowed value between two facing mirrors (every
-// branch goes the whole depth) finishes on worker threads, whose stacks are smaller than the main one.
-TEST(SceneLimits, WhittedAtTheDeepestAllowedDepthDoesNotOverflowTheStack) {
-    RenderOverrides two_threads;
-    two_threads.threads = 2;
+// branch goes the whole depth) finishes on a thread with a 256 KiB stack, where the old recursion
+// (hundreds of bytes a level, over 1024 levels) overflowed.
+TEST(SceneLimits, WhittedAtTheDeepestAllowedDepthNeedsLittleStack) {
+    RenderOverrides one_thread;  // render() then runs on the calling thread: the small one below
+    one_thread.threads = 1;
     const Scene scene =
-        test::scene_from_text("render: {width: 8, height: 8, samples: 1, integrator: whitted, max_depth: " +
+        test::scene_from_text("render: {width: 4, height: 4, samples: 1, integrator: whitted, max_depth: " +
                                   std::to_string(kMaxPathDepth) + "}\n" +
                                   "camera: {eye: [0, 0, 0], look_at: [0, 0, -1], fov: 10}\n"
                                   "materials: {m: {type: mirror}}\n"
@@ -169,12 +182,29 @@ TEST(SceneLimits, WhittedAtTheDeepestAllowedDepthDoesNotOverflowTheStack) {
                                   "  - {type: plane, point: [0, 0, -1], normal: [0, 0, 1], material: m}\n"
                                   "  - {type: plane, point: [0, 0, 1], normal: [0, 0, -1], material: m}\n"
                                   "lights: [{type: point, position: [0, 0, 0], intensity: 1}]\n",
-                              two_threads);
-    RenderStats stats;
-    const Film film = test::render_film(scene, &stats);
-    EXPECT_EQ(stats.nonfinite_samples, 0u);
+                              one_thread);
+    struct Job {
+        const Scene* scene;
+        RenderStats stats;
+    } job{&scene, {}};
+    pthread_attr_t attributes;
+    pthread_attr_init(&attributes);
+    ASSERT_EQ(pthread_attr_setstacksize(&attributes, 256 * 1024), 0);
+    pthread_t thread;
+    ASSERT_EQ(pthread_create(
+                  &thread, &attributes,
+                  [](void* argument) -> void* {
+                      auto* j = static_cast<Job*>(argument);
+                      test::render_film(*j->scene, &j->stats);
+                      return nullptr;
+                  },
+                  &job),
+              0);
+    pthread_join(thread, nullptr);
+    pthread_attr_destroy(&attributes);
+    EXPECT_EQ(job.stats.nonfinite_samples, 0u);
     // Every camera ray is reflected the whole depth: the mirror room never lets a branch escape.
-    EXPECT_EQ(stats.rays.secondary, 64u * kMaxPathDepth);
+    EXPECT_EQ(job.stats.rays.secondary, 16u * kMaxPathDepth);
 }
 
 }  // namespace

@@ -37,13 +37,21 @@ class Converter {
             throw SceneError(node.pos, "the scene expands to more than " + std::to_string(kMaxSceneValues) +
                                            " values (are aliases (*name) repeating large parts of it?)");
         }
+
+        // Few values can still be many bytes: a long string repeated by a million aliases.
+        if (yaml.IsScalar() && (bytes_ += yaml.Scalar().size()) > kMaxSceneValueBytes) {
+            throw SceneError(node.pos, "the scene's values add up to more than " +
+                                           std::to_string(kMaxSceneValueBytes) +
+                                           " bytes (are aliases (*name) repeating a long text?)");
+        }
         // An alias to an enclosing node would make the tree infinite. yaml-cpp's own parser limits
         // nesting in the text, but not the depth reached through aliases, so this guards both.
         for (const YAML::Node& ancestor : ancestors_) {
             if (ancestor.is(yaml)) {
+                // yaml-cpp gives an alias the position of its anchor, so that is where this points.
                 throw SceneError(node.pos,
-                                 "an alias refers to a value that contains it (the value would be "
-                                 "infinite)");
+                                 "this anchored value contains an alias of itself (the value would "
+                                 "be infinite)");
             }
         }
         if (ancestors_.size() >= kMaxSceneNesting) {
@@ -76,6 +84,10 @@ class Converter {
                         throw SceneError(key_pos, "a key must be a plain word");
                     }
                     const std::string key = entry.first.Scalar();
+                    if ((bytes_ += key.size()) > kMaxSceneValueBytes) {
+                        throw SceneError(key_pos, "the scene's keys and values add up to more than " +
+                                                      std::to_string(kMaxSceneValueBytes) + " bytes");
+                    }
                     if (node.find(key)) {
                         throw SceneError(key_pos, "duplicate key '" + key + "'");
                     }
@@ -93,6 +105,7 @@ class Converter {
     std::shared_ptr<const SourceFile> file_;
     std::vector<YAML::Node> ancestors_;  // the maps and lists enclosing the node being converted
     std::size_t values_ = 0;
+    std::size_t bytes_ = 0;  // of scalars, keys included, counted each time an alias repeats them
 };
 
 // yaml-cpp reads UTF-16 and UTF-32 (by their byte-order marks or zero bytes) as well as UTF-8, and then
@@ -131,12 +144,12 @@ void check_encoding(const std::string& text, const std::shared_ptr<const SourceF
 
 SceneDesc parse_scene_text(const std::string& text, const std::string& display_path,
                            const std::filesystem::path& base_dir) {
-    const auto file = SourceFile::from_text(display_path, text);
     if (text.size() > kMaxSceneFileBytes) {
-        throw SceneError({file, 0, 0}, "the scene is " + std::to_string(text.size()) +
-                                           " bytes, more than " + std::to_string(kMaxSceneFileBytes) +
-                                           " a scene may have");
+        throw SceneError({SourceFile::from_text(display_path, ""), 0, 0},
+                         "the scene is " + std::to_string(text.size()) + " bytes, more than " +
+                             std::to_string(kMaxSceneFileBytes) + " a scene may have");
     }
+    const auto file = SourceFile::from_text(display_path, text);
     check_encoding(text, file);
     YAML::Node yaml;
     try {
