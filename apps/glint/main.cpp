@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <cerrno>
 #include <csignal>
 #include <new>
 
@@ -31,18 +32,21 @@ constexpr int kExitInterrupted = 128 + SIGINT;
 
 // Ctrl-C during a render: the first asks the render to stop after its current pass (and the image so
 // far to be written); a second, or SIGTERM, ends the process at once. Only async-signal-safe calls in
-// the handler: a lock-free atomic store, write(2), and _exit(2).
+// the handler: lock-free atomics, write(2), unlink(2) (in remove_pending_temporary_files) and _exit(2);
+// errno is kept for the code the signal interrupted.
 std::atomic<bool> g_stop_after_pass{false};
-volatile std::sig_atomic_t g_interrupts = 0;
+std::atomic<int> g_interrupts{0};
 
 extern "C" void on_stop_signal(int signal) {
-    if (signal == SIGINT && g_interrupts == 0) {
-        g_interrupts = 1;
+    const int saved_errno = errno;
+    // exchange, not a read then a write: two SIGINTs may arrive on two threads at once.
+    if (signal == SIGINT && g_interrupts.exchange(1) == 0) {
         g_stop_after_pass.store(true);
         static const char message[] =
             "\nglint: stopping after this pass to write the image so far "
             "(Ctrl-C again to quit without writing)\n";
         [[maybe_unused]] const auto written = ::write(STDERR_FILENO, message, sizeof(message) - 1);
+        errno = saved_errno;
         return;
     }
     glint::remove_pending_temporary_files();  // a half-written image must not stay behind
@@ -50,7 +54,8 @@ extern "C" void on_stop_signal(int signal) {
 }
 
 void install_stop_handlers() {
-    static_assert(std::atomic<bool>::is_always_lock_free, "the signal handler needs a lock-free flag");
+    static_assert(std::atomic<bool>::is_always_lock_free && std::atomic<int>::is_always_lock_free,
+                  "the signal handler needs lock-free atomics");
     struct sigaction action {};
     action.sa_handler = on_stop_signal;
     sigemptyset(&action.sa_mask);

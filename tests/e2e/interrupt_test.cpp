@@ -46,13 +46,19 @@ Running start_glint(const std::string& arguments, const test::TempDir& dir) {
     return run;
 }
 
-// Waits for the process to end (at most a minute); its exit code, or -1.
+std::string read_text(const std::filesystem::path& path) {
+    std::ifstream in(path);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// Waits for the process to end (at most a minute); its exit code, or -1 if it had to be killed. A death
+// by a signal is 1000 + the signal: glint must exit, not be killed, even when it is told to stop.
 int wait_exit(pid_t pid) {
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(1);
     while (std::chrono::steady_clock::now() < deadline) {
         int status = 0;
         if (::waitpid(pid, &status, WNOHANG) == pid) {
-            return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+            return WIFEXITED(status) ? WEXITSTATUS(status) : 1000 + WTERMSIG(status);
         }
         std::this_thread::sleep_for(std::chrono::milliseconds(20));
     }
@@ -61,15 +67,25 @@ int wait_exit(pid_t pid) {
     return -1;
 }
 
-// Waits until the render has begun (its log says nothing before, and the scene is small, so the
-// first pass starts within moments of the start): long enough for the handlers to be installed.
-void let_it_start() {
-    std::this_thread::sleep_for(std::chrono::milliseconds(700));
-}
-
-std::string read_text(const std::filesystem::path& path) {
-    std::ifstream in(path);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+// Waits until glint has installed its SIGINT and SIGTERM handlers (the SigCgt mask in /proc), then a
+// little longer, for the small default scene to be built and the render to begin.
+void let_it_start(pid_t pid) {
+    const std::uint64_t wanted = (1u << (SIGINT - 1)) | (1u << (SIGTERM - 1));
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+    while (std::chrono::steady_clock::now() < deadline) {
+        std::ifstream status("/proc/" + std::to_string(pid) + "/status");
+        std::uint64_t caught = 0;
+        for (std::string line; std::getline(status, line);) {
+            if (line.rfind("SigCgt:", 0) == 0) {
+                caught = std::stoull(line.substr(7), nullptr, 16);
+            }
+        }
+        if ((caught & wanted) == wanted) {
+            break;
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
 }
 
 // Files in `dir` other than the log: the image, or a temporary file left behind.
@@ -87,7 +103,7 @@ TEST(Interrupt, FirstCtrlCWritesTheSamplesTakenSoFar) {
     test::TempDir dir;
     const auto out = dir / "partial.pfm";
     const Running run = start_glint(kLongRender + " -o " + out.string(), dir);
-    let_it_start();
+    let_it_start(run.pid);
     ASSERT_EQ(::kill(run.pid, SIGINT), 0);
     EXPECT_EQ(wait_exit(run.pid), 130);
     const std::string log = read_text(run.log);
@@ -116,11 +132,15 @@ TEST(Interrupt, SecondCtrlCQuitsAtOnceWithoutAFile) {
         start_glint("render --width 1280 --height 720 --spp 4096 --integrator path --max-depth 64 -o " +
                         (dir / "never.png").string(),
                     dir);
-    let_it_start();
+    let_it_start(run.pid);
     ::kill(run.pid, SIGINT);
-    // Long enough for the first to be handled (two pending SIGINTs would merge into one), and short
-    // against a pass of this image, which takes a second or more.
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    // The second only once the first was handled (two pending SIGINTs would merge into one): its
+    // message is in the log. A pass of this image takes seconds, so the render is still in it.
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+    while (read_text(run.log).find("stopping after this pass") == std::string::npos &&
+           std::chrono::steady_clock::now() < deadline) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
     ::kill(run.pid, SIGINT);
     EXPECT_EQ(wait_exit(run.pid), 130);
     EXPECT_TRUE(files_besides_log(dir).empty()) << read_text(run.log);
@@ -129,7 +149,7 @@ TEST(Interrupt, SecondCtrlCQuitsAtOnceWithoutAFile) {
 TEST(Interrupt, SigtermQuitsWithoutAFile) {
     test::TempDir dir;
     const Running run = start_glint(kLongRender + " -o " + (dir / "never.exr").string(), dir);
-    let_it_start();
+    let_it_start(run.pid);
     ::kill(run.pid, SIGTERM);
     EXPECT_EQ(wait_exit(run.pid), 143);
     EXPECT_TRUE(files_besides_log(dir).empty()) << read_text(run.log);

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
+#include <limits>
 #include <stdexcept>
 #include <string_view>
 
@@ -311,9 +312,16 @@ Image decode_checked_exr(const unsigned char* data, std::size_t size, const std:
         }
         chunks = count_tiles(header, width, height);
         chunk_header = 20;  // tile x, y, level x, level y, data size
-        decoded_samples =
-            std::max(decoded_samples, chunks * static_cast<std::uint64_t>(header.tile_size_x) *
-                                          static_cast<std::uint64_t>(header.tile_size_y) * channels);
+        // Each factor is bounded, but a ripmap's chunks times a tile's pixels times the channels can
+        // still wrap 64 bits: an overflow counts as too many samples.
+        std::uint64_t tiled_samples = 0;
+        if (__builtin_mul_overflow(chunks, static_cast<std::uint64_t>(header.tile_size_x), &tiled_samples) ||
+            __builtin_mul_overflow(tiled_samples, static_cast<std::uint64_t>(header.tile_size_y),
+                                   &tiled_samples) ||
+            __builtin_mul_overflow(tiled_samples, static_cast<std::uint64_t>(channels), &tiled_samples)) {
+            tiled_samples = std::numeric_limits<std::uint64_t>::max();
+        }
+        decoded_samples = std::max(decoded_samples, tiled_samples);
     } else {
         chunks = static_cast<std::uint64_t>((height + lines_per_chunk(header.compression_type) - 1) /
                                             lines_per_chunk(header.compression_type));

@@ -129,15 +129,18 @@ RenderStats render(const Scene& scene, Film& film, const RenderCallbacks& callba
             }
         });
         first_sample += pass;
-        const bool last = first_sample == stats.samples_per_pixel;
-        if (!last && ((callbacks.cancel && callbacks.cancel->load()) ||
-                      (callbacks.stop_after_pass && callbacks.stop_after_pass->load()))) {
+        // Read once: a cancel during this pass skipped tiles of it, even of the last pass; a stop after
+        // the pass matters only if a pass is left.
+        if (callbacks.cancel && callbacks.cancel->load()) {
             stats.cancelled = true;
             break;
         }
-    }
-    if (stats.cancelled && !(callbacks.cancel && callbacks.cancel->load())) {
-        stats.samples_per_pixel = first_sample;  // a whole number of passes: every pixel has these
+        if (first_sample < stats.samples_per_pixel && callbacks.stop_after_pass &&
+            callbacks.stop_after_pass->load()) {
+            stats.cancelled = true;
+            stats.samples_per_pixel = first_sample;  // a whole number of passes: every pixel has these
+            break;
+        }
     }
     stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     for (const TileResult& r : results) {

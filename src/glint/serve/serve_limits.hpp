@@ -23,8 +23,8 @@ inline constexpr std::int64_t kMaxPixels = 2048 * 2048;
 // Samples per pixel: the preview refines until it has them, with every core busy; past this the wait
 // is hours, which is a job for `glint render`.
 inline constexpr std::int64_t kMaxSamples = 16384;
-// Bounces: Whitted recursion and path length grow with it (Whitted recurses on the stack, and traces
-// two rays at each dielectric), and the page's slider stops here.
+// Bounces: the cost of Whitted's tree (two rays at each dielectric) and of paths grows with it, and the
+// page's slider stops here.
 inline constexpr std::int64_t kMaxDepth = 64;
 
 // The numeric keys that set the cost of a frame. (Other keys the page may edit have ranges the scene
