@@ -4,6 +4,7 @@
 // checked here come from glint's header checks, which run before any decoder). Plus the decoded values
 // of files whose pixels are known: 16-bit PGM/PPM, grey and big-endian PFM, RLE HDR, tiled and half EXR.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <chrono>
 #include <cmath>
@@ -249,8 +250,8 @@ TEST(ImageRead, SizesTheFileCannotHoldAreRefused) {
     };
     // 1000 × 1000 RGB bytes = 3 000 000 bytes, deflated at most 1032:1 → 2907 bytes.
     expect("short.png", png_header(1000, 1000) + be32(0) + "IEND" + "CRC!", "2907");
-    // 1 000 000 pixels, one bit per 64-pixel block at least → 1954 bytes.
-    expect("short.jpg", jpeg_header(1000, 1000) + "\xff\xd9", "1954");
+    // 1 000 000 pixels, at least one bit for every 128 → 977 bytes.
+    expect("short.jpg", jpeg_header(1000, 1000) + "\xff\xd9", "977");
     // 54 bytes of header, then rows of 3 × 3 = 9 bytes padded to 12: 12 + 9 = 21 → 75.
     expect("short.bmp", bmp(3, 2, 24, std::string(20, '\0')), "75");
     // 18 bytes of header + 10 × 10 × 3.
@@ -464,6 +465,20 @@ TEST(ImageRead, ExrHeadersTinyexrWouldTrustAreRefused) {
                    {"multi-part and deep OpenEXR files are not supported"});
 }
 
+TEST(ImageRead, JpegHuffmanTableOfMoreThan256CodesIsRefusedNotAborted) {
+    // stb_image 2.27 writes such a table past its arrays and then fails an assertion (the process
+    // aborts); glint refuses the file first. The table's 16 code counts follow FF C4, its length and
+    // its class/id byte.
+    const std::string valid = encode_jpeg();
+    ASSERT_NO_THROW(decode_image({valid.begin(), valid.end()}, "valid.jpg"));
+    const size_t dht = valid.find("\xff\xc4");
+    ASSERT_NE(dht, std::string::npos);
+    std::string bad = valid;
+    bad[dht + 5 + 15] = static_cast<char>(255);  // 255 codes of 16 bits, on top of the table's own
+    test::TempDir dir;
+    expect_refused(dir.write("huffman.jpg", bad), {"JPEG Huffman table at byte", "more than the 256"});
+}
+
 // ---- Truncated and corrupted files: refused or read, never a crash or a hang ----
 
 struct Sample {
@@ -550,6 +565,9 @@ TEST(ImageRead, OtherFilesAreRefusedWithTheirReason) {
     std::filesystem::create_directories(dir / "folder.png");
     expect_refused(dir / "folder.png", {"is a folder"});
     expect_refused(dir.write("empty.png", ""), {"the file is empty"});
+    // A FIFO: refused at once, not waited on for a writer.
+    ASSERT_EQ(::mkfifo((dir / "fifo.png").c_str(), 0600), 0);
+    expect_refused(dir / "fifo.png", {"is not a regular file"});
     expect_refused(dir.write("text.png", "this is text"),
                    {"not an image file glint recognises", "PNG, JPEG"});
     expect_refused(dir.write("a.gif", "GIF89a" + std::string(20, '\0')), {"GIF files are not supported"});

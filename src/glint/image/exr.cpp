@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
-#include <limits>
+#include <initializer_list>
 #include <stdexcept>
 #include <string_view>
 
@@ -104,6 +104,17 @@ struct ImageOwner {
     ImageOwner(const ImageOwner&) = delete;
     ImageOwner& operator=(const ImageOwner&) = delete;
 };
+
+// The product, or the largest std::uint64_t if it is larger: hostile counts must not wrap round.
+std::uint64_t saturating_product(std::initializer_list<std::uint64_t> factors) {
+    std::uint64_t product = 1;
+    for (const std::uint64_t factor : factors) {
+        if (__builtin_mul_overflow(product, factor, &product)) {
+            return UINT64_MAX;
+        }
+    }
+    return product;
+}
 
 // Scanlines a chunk holds, as tinyexr decodes them.
 std::int64_t lines_per_chunk(int compression) {
@@ -312,16 +323,9 @@ Image decode_checked_exr(const unsigned char* data, std::size_t size, const std:
         }
         chunks = count_tiles(header, width, height);
         chunk_header = 20;  // tile x, y, level x, level y, data size
-        // Each factor is bounded, but a ripmap's chunks times a tile's pixels times the channels can
-        // still wrap 64 bits: an overflow counts as too many samples.
-        std::uint64_t tiled_samples = 0;
-        if (__builtin_mul_overflow(chunks, static_cast<std::uint64_t>(header.tile_size_x), &tiled_samples) ||
-            __builtin_mul_overflow(tiled_samples, static_cast<std::uint64_t>(header.tile_size_y),
-                                   &tiled_samples) ||
-            __builtin_mul_overflow(tiled_samples, static_cast<std::uint64_t>(channels), &tiled_samples)) {
-            tiled_samples = std::numeric_limits<std::uint64_t>::max();
-        }
-        decoded_samples = std::max(decoded_samples, tiled_samples);
+        const std::uint64_t tile_pixels =
+            static_cast<std::uint64_t>(header.tile_size_x) * static_cast<std::uint64_t>(header.tile_size_y);
+        decoded_samples = std::max(decoded_samples, saturating_product({chunks, tile_pixels, channels}));
     } else {
         chunks = static_cast<std::uint64_t>((height + lines_per_chunk(header.compression_type) - 1) /
                                             lines_per_chunk(header.compression_type));
@@ -356,6 +360,9 @@ Image decode_checked_exr(const unsigned char* data, std::size_t size, const std:
 
     ImageOwner owned_image;
     EXRImage& exr = owned_image.image;
+    // When a scanline image fails to decode, tinyexr frees it by its channel count, which it sets only
+    // on success: without this the channels' planes would leak.
+    exr.num_channels = header.num_channels;
     if (LoadEXRImageFromMemory(&exr, &header, data, size, &error) != TINYEXR_SUCCESS) {
         fail(name, "cannot decode the OpenEXR file: " + take_error(error));
     }

@@ -1,6 +1,6 @@
 // Header checks for the formats stb_image decodes. Each parser reads only the fields it needs to bound the
 // file: the declared size, and for uncompressed formats the bytes that size takes; for compressed ones
-// the least their coding can spend on it (deflate: 1 bit per 258 bytes; JPEG: 1 bit per 8×8 block; TGA
+// the least their coding can spend on it (deflate: 1 bit per 258 bytes; JPEG: 1 bit per 128 pixels; TGA
 // and HDR run-length packets: 128 and 127 pixels). The numbers are those of stb_image 2.27 (Debian's
 // libstb), whose reading of each header the parsers follow and whose stbi_info_from_memory must agree.
 #include "glint/image/image_headers.hpp"
@@ -584,10 +584,12 @@ StbHeader check_stb_header(FileFormat format, const unsigned char* data, std::si
         header.height = info_height;
         header.channels = info_channels;
         check_declared_size(name, format_text, header.width, header.height);
-        // Every 8 × 8 block of a full-resolution component costs at least one bit (a Huffman code is 1 to
-        // 16 bits; baseline blocks need two, progressive ones one in the first DC scan).
-        needed = ceil_div(static_cast<std::uint64_t>(header.width * header.height), 512);
-        why = "at least 1 bit for each 8x8 block";
+        // Every 8 × 8 block of every component costs at least one bit (a Huffman code is 1 to 16 bits;
+        // baseline blocks need two, progressive ones one in the first DC scan). Subsampled components
+        // have fewer blocks, but sampling factors of at most 4 leave the components together at least
+        // half a block for each 64 pixels (4 × 1 and 1 × 4 is the worst): 1 bit per 128 pixels.
+        needed = ceil_div(static_cast<std::uint64_t>(header.width * header.height), 1024);
+        why = "at least 1 bit for every 128 pixels";
     }
     if (info_width != header.width || info_height != header.height) {
         fail(name, std::string(format_text) + " header read two ways: " + std::to_string(header.width) +
