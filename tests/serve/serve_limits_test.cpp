@@ -479,5 +479,16 @@ TEST(ServeLimits, RangesAndLongPathsAreRefusedAndPipelinedRequestsAnswered) {
     EXPECT_TRUE(socket.closed_by_server());
 }
 
+// A client may half-close its side once the request is sent (`nc -N`, `curl` behind some proxies):
+// it still gets the answer.
+TEST(ServeLimits, AClientThatHalfClosesAfterItsRequestStillGetsTheAnswer) {
+    RunningServer server(small_scene());
+    RawSocket socket(server.port());
+    ASSERT_TRUE(socket.send("GET /api/scene HTTP/1.1\r\nHost: 127.0.0.1\r\nConnection: close\r\n\r\n"));
+    ASSERT_EQ(::shutdown(socket.fd(), SHUT_WR), 0);
+    const std::string reply = socket.read_all(3.0);
+    EXPECT_EQ(status_line(reply), "HTTP/1.1 200 OK") << reply.substr(0, 200);
+}
+
 }  // namespace
 }  // namespace glint

@@ -239,7 +239,10 @@ class BoundedSocketStream final : public httplib::Stream {
     }
 
     ssize_t write(const char* data, size_t size) override {
-        if (refused_ || !wait_writable() || !peer_open()) {
+        // No peer_open() here: a client that half-closes after its request (`nc -N`) still reads the
+        // answer; a socket closed for good fails the send (EPIPE). is_writable() keeps the check, for
+        // the event streams' loop, which must notice a page that went away without writing to it.
+        if (refused_ || !wait_writable()) {
             return -1;
         }
         wrote_ = true;
