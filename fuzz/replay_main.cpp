@@ -4,18 +4,29 @@
 // replays what the fuzzer once found, without clang or libFuzzer.
 //
 // A finding shows as a crash (the input's path was printed just before), an abort from a failed check,
-// or an input slower than kSlowSeconds (a replayed input must stay far from the fuzzer's -timeout).
+// a single allocation of 2 GiB or more (as libFuzzer's -malloc_limit_mb, see below), or an input slower
+// than kSlowSeconds (a replayed input must stay far from the fuzzer's -timeout).
 #include <sys/resource.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <string>
 #include <vector>
+
+#if defined(__SANITIZE_ADDRESS__)  // g++ -fsanitize=address
+#define GLINT_REPLAY_UNDER_ASAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)  // clang
+#define GLINT_REPLAY_UNDER_ASAN 1
+#endif
+#endif
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size);
 
@@ -23,21 +34,15 @@ namespace {
 
 constexpr double kSlowSeconds = 10;  // libFuzzer's -timeout in fuzz/run.sh
 
-#if defined(__SANITIZE_ADDRESS__)
+#if defined(GLINT_REPLAY_UNDER_ASAN)
 constexpr bool kAddressSanitizer = true;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-constexpr bool kAddressSanitizer = true;
-#else
-constexpr bool kAddressSanitizer = false;
-#endif
 #else
 constexpr bool kAddressSanitizer = false;
 #endif
 
-// As the fuzzer's -rss_limit_mb=2048 would, stop an input that wants unbounded memory before it
-// takes the machine's: without AddressSanitizer (which reserves terabytes of address space), cap the
-// address space, so a huge allocation fails with bad_alloc, an uncaught exception, a finding.
+// As the fuzzer's -rss_limit_mb=2048 would, stop an input that wants unbounded memory (many allocations
+// each under the limit below) before it takes the machine's: without AddressSanitizer (which reserves
+// terabytes of address space), cap the address space, so the allocation that crosses it fails.
 void limit_memory() {
     if (kAddressSanitizer) {
         return;
@@ -48,6 +53,75 @@ void limit_memory() {
         std::perror("setrlimit");
     }
 }
+
+}  // namespace
+
+// libFuzzer stops an input that asks for 2048 MiB or more in one allocation (its -malloc_limit_mb,
+// which follows -rss_limit_mb=2048): a size read from a file and not checked before allocating. The
+// normal build does the same by interposing malloc, calloc and realloc on glibc's (operator new and
+// every library call them), so such a regression fails here too, even where the allocation would
+// have succeeded (overcommit) and the reader then failed politely. AddressSanitizer has its own
+// malloc: under the sanitize preset, ctest sets ASAN_OPTIONS=max_allocation_size_mb=2048 instead.
+#if !defined(GLINT_REPLAY_UNDER_ASAN)
+extern "C" {
+void* __libc_malloc(std::size_t size);
+void* __libc_calloc(std::size_t count, std::size_t size);
+void* __libc_realloc(void* pointer, std::size_t size);
+}
+
+namespace {
+
+constexpr std::size_t kMallocLimitMiB = 2048;
+
+[[noreturn]] void allocation_too_large(std::size_t size) {
+    // No stdio: it may allocate. The size in decimal, by hand.
+    char digits[24];
+    int n = 0;
+    do {
+        digits[n++] = static_cast<char>('0' + size % 10);
+        size /= 10;
+    } while (size > 0);
+    char message[96] = "replay: an allocation of ";
+    std::size_t length = 25;
+    while (n > 0) {
+        message[length++] = digits[--n];
+    }
+    const char tail[] = " bytes, over the 2048 MiB limit: a finding\n";
+    for (const char c : tail) {
+        if (c != '\0') {
+            message[length++] = c;
+        }
+    }
+    (void)!::write(STDERR_FILENO, message, length);
+    std::abort();
+}
+
+void check_size(std::size_t size) {
+    if ((size >> 20) >= kMallocLimitMiB) {
+        allocation_too_large(size);
+    }
+}
+
+}  // namespace
+
+extern "C" void* malloc(std::size_t size) {
+    check_size(size);
+    return __libc_malloc(size);
+}
+extern "C" void* calloc(std::size_t count, std::size_t size) {
+    if (size != 0 && count > SIZE_MAX / size) {
+        allocation_too_large(SIZE_MAX);
+    }
+    check_size(count * size);
+    return __libc_calloc(count, size);
+}
+extern "C" void* realloc(void* pointer, std::size_t size) {
+    check_size(size);
+    return __libc_realloc(pointer, size);
+}
+#endif
+
+namespace {
 
 // Every regular file under `path` (or `path` itself), skipping dot files (.gitkeep), in name order.
 bool collect(const std::filesystem::path& path, std::vector<std::filesystem::path>& files) {
