@@ -1,19 +1,23 @@
 // The main() of a harness outside libFuzzer: runs LLVMFuzzerTestOneInput once on every file of the
-// folders (and files) given, in name order. ctest runs each harness this way over its seed corpus and
-// its saved regressions (fuzz/CMakeLists.txt), so every build — g++ release, the sanitize preset —
-// replays what the fuzzer once found, without clang or libFuzzer.
+// folders (and files) given, in name order, each in a child process of its own. ctest runs each harness this
+// way over its seed corpus and its saved regressions (fuzz/CMakeLists.txt), so every build — g++ release, the
+// sanitize preset — replays what the fuzzer once found, without clang or libFuzzer.
 //
-// A finding shows as a crash (the input's path was printed just before), an abort from a failed check,
-// a single allocation of 2 GiB or more (as libFuzzer's -malloc_limit_mb, see below), or an input slower
-// than kSlowSeconds (a replayed input must stay far from the fuzzer's -timeout).
+// A finding shows as a crash or abort of the child (a sanitizer's report, a failed check, an uncaught
+// exception), a single allocation of 2 GiB or more (as libFuzzer's -malloc_limit_mb, see below), or an input
+// slower than kSlowSeconds: bad input must be refused within about a second (docs: the project's standards),
+// and well within the fuzzer's -timeout of 10 s under the sanitizers.
 #include <sys/resource.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -32,12 +36,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 
 namespace {
 
-constexpr double kSlowSeconds = 10;  // libFuzzer's -timeout in fuzz/run.sh
-
 #if defined(GLINT_REPLAY_UNDER_ASAN)
 constexpr bool kAddressSanitizer = true;
+constexpr double kSlowSeconds = 10;  // libFuzzer's -timeout in fuzz/run.sh
+constexpr unsigned kKillSeconds = 60;
 #else
 constexpr bool kAddressSanitizer = false;
+constexpr double kSlowSeconds = 2;  // the seeds take milliseconds; 2 s leaves room for a loaded machine
+constexpr unsigned kKillSeconds = 20;
 #endif
 
 // As the fuzzer's -rss_limit_mb=2048 would, stop an input that wants unbounded memory (many allocations
@@ -61,7 +67,7 @@ void limit_memory() {
 // normal build does the same by interposing malloc, calloc and realloc on glibc's (operator new and
 // every library call them), so such a regression fails here too, even where the allocation would
 // have succeeded (overcommit) and the reader then failed politely. AddressSanitizer has its own
-// malloc: under the sanitize preset, ctest sets ASAN_OPTIONS=max_allocation_size_mb=2048 instead.
+// malloc: under the sanitize preset, ctest sets ASAN_OPTIONS=max_allocation_size_mb=2047 instead.
 #if !defined(GLINT_REPLAY_UNDER_ASAN)
 extern "C" {
 void* __libc_malloc(std::size_t size);
@@ -145,6 +151,46 @@ bool collect(const std::filesystem::path& path, std::vector<std::filesystem::pat
     return true;
 }
 
+// Runs the harness on one input in a child process, so that a crash or a hang stops only that input
+// and every input of the folders gets its verdict. Returns whether the input passed.
+bool replay(const std::filesystem::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    const std::vector<char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::fprintf(stderr, "replay: %s (%zu bytes)\n", file.c_str(), bytes.size());
+    const auto start = std::chrono::steady_clock::now();
+    const pid_t child = ::fork();
+    if (child < 0) {
+        std::perror("fork");
+        return false;
+    }
+    if (child == 0) {
+        ::alarm(kKillSeconds);  // a hang ends here rather than at ctest's timeout
+        LLVMFuzzerTestOneInput(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size());
+        std::exit(0);  // not _exit: static destructors and LeakSanitizer's check run as in the fuzzer
+    }
+    int status = 0;
+    while (::waitpid(child, &status, 0) < 0 && errno == EINTR) {
+    }
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (WIFSIGNALED(status)) {
+        std::fprintf(stderr, "replay: FAILED %s: %s after %.3f s\n", file.c_str(),
+                     strsignal(WTERMSIG(status)), seconds);
+        return false;
+    }
+    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+        std::fprintf(stderr, "replay: FAILED %s: exit code %d after %.3f s\n", file.c_str(),
+                     WEXITSTATUS(status), seconds);
+        return false;
+    }
+    if (seconds > kSlowSeconds) {
+        std::fprintf(stderr, "replay: FAILED %s: took %.3f s, more than %.0f s\n", file.c_str(), seconds,
+                     kSlowSeconds);
+        return false;
+    }
+    std::fprintf(stderr, "  ok, %.3f s\n", seconds);
+    return true;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -158,21 +204,15 @@ int main(int argc, char** argv) {
     for (int i = 1; i < argc; ++i) {
         all_found = collect(argv[i], files) && all_found;
     }
-    int slow = 0;
+    std::vector<std::filesystem::path> failed;
     for (const auto& file : files) {
-        std::ifstream in(file, std::ios::binary);
-        const std::vector<char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-        std::fprintf(stderr, "replay: %s (%zu bytes)\n", file.c_str(), bytes.size());
-        const auto start = std::chrono::steady_clock::now();
-        LLVMFuzzerTestOneInput(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size());
-        const double seconds =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        if (seconds > kSlowSeconds) {
-            std::fprintf(stderr, "replay: %s took %.1f s (more than %.0f s): a finding\n", file.c_str(),
-                         seconds, kSlowSeconds);
-            ++slow;
+        if (!replay(file)) {
+            failed.push_back(file);
         }
     }
-    std::fprintf(stderr, "replay: %zu inputs, %d too slow\n", files.size(), slow);
-    return all_found && slow == 0 ? 0 : 1;
+    std::fprintf(stderr, "replay: %zu inputs, %zu failed\n", files.size(), failed.size());
+    for (const auto& file : failed) {
+        std::fprintf(stderr, "    %s\n", file.c_str());
+    }
+    return all_found && failed.empty() ? 0 : 1;
 }
