@@ -4,9 +4,10 @@
 // sanitize preset — replays what the fuzzer once found, without clang or libFuzzer.
 //
 // A finding shows as a crash or abort of the child (a sanitizer's report, a failed check, an uncaught
-// exception), a single allocation of 2 GiB or more (as libFuzzer's -malloc_limit_mb, see below), or an input
-// slower than kSlowSeconds: bad input must be refused within about a second (docs: the project's standards),
-// and well within the fuzzer's -timeout of 10 s under the sanitizers.
+// exception), a single allocation of 2 GiB or more (as libFuzzer's -malloc_limit_mb, see below), a peak
+// of more than 2048 MB resident (-rss_limit_mb), or an input slower than kSlowSeconds: bad input must be
+// refused within about a second (docs: the project's standards), and well within the fuzzer's -timeout of 10
+// s under the sanitizers.
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -35,6 +36,8 @@
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size);
 
 namespace {
+
+constexpr long kRssLimitMb = 2048;  // libFuzzer's -rss_limit_mb in fuzz/run.sh, checked on the child's peak
 
 #if defined(GLINT_REPLAY_UNDER_ASAN)
 constexpr bool kAddressSanitizer = true;
@@ -67,8 +70,13 @@ void limit_memory() {
 // normal build does the same by interposing malloc, calloc and realloc on glibc's (operator new and
 // every library call them), so such a regression fails here too, even where the allocation would
 // have succeeded (overcommit) and the reader then failed politely. AddressSanitizer has its own
-// malloc: under the sanitize preset, ctest sets ASAN_OPTIONS=max_allocation_size_mb=2047 instead.
-#if !defined(GLINT_REPLAY_UNDER_ASAN)
+// malloc: under the sanitize preset its options say the same (over 2047 MiB in one allocation, or 3 GiB
+// resident, is an error), built into the program so that a replay by hand behaves as under ctest.
+#if defined(GLINT_REPLAY_UNDER_ASAN)
+extern "C" const char* __asan_default_options() {
+    return "max_allocation_size_mb=2047:hard_rss_limit_mb=3072";
+}
+#else
 extern "C" {
 void* __libc_malloc(std::size_t size);
 void* __libc_calloc(std::size_t count, std::size_t size);
@@ -169,7 +177,8 @@ bool replay(const std::filesystem::path& file) {
         std::exit(0);  // not _exit: static destructors and LeakSanitizer's check run as in the fuzzer
     }
     int status = 0;
-    while (::waitpid(child, &status, 0) < 0 && errno == EINTR) {
+    rusage usage{};
+    while (::wait4(child, &status, 0, &usage) < 0 && errno == EINTR) {
     }
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (WIFSIGNALED(status)) {
@@ -187,7 +196,13 @@ bool replay(const std::filesystem::path& file) {
                      kSlowSeconds);
         return false;
     }
-    std::fprintf(stderr, "  ok, %.3f s\n", seconds);
+    const long peak_mb = usage.ru_maxrss / 1024;  // Linux: kilobytes
+    if (peak_mb > kRssLimitMb) {
+        std::fprintf(stderr, "replay: FAILED %s: used %ld MB, more than %ld MB\n", file.c_str(), peak_mb,
+                     kRssLimitMb);
+        return false;
+    }
+    std::fprintf(stderr, "  ok, %.3f s, %ld MB\n", seconds, peak_mb);
     return true;
 }
 
