@@ -1,11 +1,14 @@
 # The two commands of the README, over the CMake presets.
 #   make render   install dependencies, build (Release), render the built-in default scene to default.png
 #   make test     install dependencies, build, run the whole test suite
-# Also: make sanitize (tests under ASan + UBSan), make bench, make format, make examples.
+# Also: make sanitize (tests under ASan + UBSan), make bench, make format, make examples,
+#       make fuzz (the libFuzzer harnesses, FUZZ_SECONDS each; fuzz/README.md).
 WERROR ?= $(if $(CI),ON,OFF)
 CMAKE_FLAGS = -DGLINT_WERROR=$(WERROR)
+FUZZ_SECONDS ?= 60
+FUZZ_HARNESSES ?=
 
-.PHONY: deps build render test sanitize bench format examples clean
+.PHONY: deps build render test sanitize fuzz bench format examples clean
 
 deps:
 	./scripts/install-deps.sh
@@ -25,11 +28,16 @@ sanitize: deps
 	cmake --build --preset sanitize
 	ctest --preset sanitize
 
+fuzz: deps
+	cmake --preset fuzz $(CMAKE_FLAGS) >/dev/null
+	cmake --build --preset fuzz
+	FUZZ_SECONDS=$(FUZZ_SECONDS) ./fuzz/run.sh $(FUZZ_HARNESSES)
+
 bench: build
 	./build/release/bench/glint_bench_scene --benchmark_min_time=2
 
 format:
-	find src apps tests bench -name '*.cpp' -o -name '*.hpp' | xargs clang-format -i
+	find src apps tests bench fuzz -name '*.cpp' -o -name '*.hpp' | xargs clang-format -i
 
 examples: build
 	./scripts/render-examples.sh build/examples

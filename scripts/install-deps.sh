@@ -9,6 +9,7 @@ packages=(
   libstb-dev libtinyexr-dev libpng-dev libtinyobjloader-dev libembree-dev
   nlohmann-json3-dev libcpp-httplib-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  clang libclang-rt-14-dev llvm  # make fuzz: clang with libFuzzer and the sanitizers' runtimes, llvm-symbolizer
 )
 
 missing=()
