@@ -32,27 +32,14 @@ namespace glint::fuzz {
     ((condition) ? static_cast<void>(0) : ::glint::fuzz::broken_promise(#condition, __FILE__, __LINE__))
 
 // The input, written to a file with the given extension, for readers that only take a path (the mesh
-// loaders, read_image). The file lives in /dev/shm when it exists (no disk traffic for millions of
-// executions), is named after the process (parallel fuzzers do not collide), and is rewritten for
-// every input; the destructor removes it when the process exits normally.
-class InputFile {
+// loaders, read_image), and removed again when this goes out of scope. The file lives in /dev/shm when
+// it exists (no disk traffic for millions of executions) and is named after the process (parallel
+// fuzzers do not collide). Removed after every input, not at exit: libFuzzer ends its processes
+// without running destructors; only an input that crashes leaves its file behind.
+class TemporaryInputFile {
   public:
-    explicit InputFile(const std::string& extension) {
-        std::error_code ec;
-        std::filesystem::path folder = "/dev/shm";
-        if (!std::filesystem::is_directory(folder, ec) || ::access(folder.c_str(), W_OK) != 0) {
-            folder = std::filesystem::temp_directory_path();
-        }
-        path_ = folder / ("glint-fuzz-" + std::to_string(::getpid()) + extension);
-    }
-    ~InputFile() {
-        std::error_code ec;
-        std::filesystem::remove(path_, ec);
-    }
-    InputFile(const InputFile&) = delete;
-    InputFile& operator=(const InputFile&) = delete;
-
-    const std::filesystem::path& write(const std::uint8_t* data, std::size_t size) {
+    TemporaryInputFile(const char* extension, const std::uint8_t* data, std::size_t size)
+        : path_(folder() / ("glint-fuzz-" + std::to_string(::getpid()) + extension)) {
         std::FILE* f = std::fopen(path_.c_str(), "wb");
         if (!f) {
             std::perror(path_.c_str());
@@ -63,10 +50,29 @@ class InputFile {
             std::perror(path_.c_str());
             std::abort();
         }
-        return path_;
     }
+    ~TemporaryInputFile() {
+        std::error_code ec;
+        std::filesystem::remove(path_, ec);
+    }
+    TemporaryInputFile(const TemporaryInputFile&) = delete;
+    TemporaryInputFile& operator=(const TemporaryInputFile&) = delete;
+
+    const std::filesystem::path& path() const { return path_; }
 
   private:
+    static const std::filesystem::path& folder() {
+        static const std::filesystem::path chosen = [] {
+            std::error_code ec;
+            const std::filesystem::path shm = "/dev/shm";
+            if (std::filesystem::is_directory(shm, ec) && ::access(shm.c_str(), W_OK) == 0) {
+                return shm;
+            }
+            return std::filesystem::temp_directory_path();
+        }();
+        return chosen;
+    }
+
     std::filesystem::path path_;
 };
 

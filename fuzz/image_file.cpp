@@ -15,8 +15,8 @@
 #include "glint/image/image_io.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-    static glint::fuzz::InputFile input(GLINT_FUZZ_EXTENSION);
-    const std::filesystem::path& path = input.write(data, size);
+    const glint::fuzz::TemporaryInputFile input(GLINT_FUZZ_EXTENSION, data, size);
+    const std::filesystem::path& path = input.path();
     try {
         const glint::Image image = glint::read_image(path);
         // An empty image may come back (stb accepts a BMP of height 0): the texture builder refuses it.

@@ -40,8 +40,8 @@ void trace_through(const glint::Mesh& mesh) {
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-    static glint::fuzz::InputFile input(GLINT_FUZZ_EXTENSION);
-    const std::filesystem::path& path = input.write(data, size);
+    const glint::fuzz::TemporaryInputFile input(GLINT_FUZZ_EXTENSION, data, size);
+    const std::filesystem::path& path = input.path();
     glint::MeshData mesh_data;
     try {
         mesh_data = glint::load_mesh_file(path);

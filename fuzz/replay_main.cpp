@@ -159,6 +159,21 @@ bool collect(const std::filesystem::path& path, std::vector<std::filesystem::pat
     return true;
 }
 
+// The input file a harness wrote for a child that crashed before removing it (TemporaryInputFile in
+// fuzz_support.hpp: glint-fuzz-<pid>.<extension> in /dev/shm or the temporary folder).
+void remove_input_files_of(pid_t child) {
+    const std::string prefix = "glint-fuzz-" + std::to_string(child) + ".";
+    std::error_code ec;
+    for (const std::filesystem::path& folder :
+         {std::filesystem::path("/dev/shm"), std::filesystem::temp_directory_path(ec)}) {
+        for (const auto& entry : std::filesystem::directory_iterator(folder, ec)) {
+            if (entry.path().filename().string().rfind(prefix, 0) == 0) {
+                std::filesystem::remove(entry.path(), ec);
+            }
+        }
+    }
+}
+
 // Runs the harness on one input in a child process, so that a crash or a hang stops only that input
 // and every input of the folders gets its verdict. Returns whether the input passed.
 bool replay(const std::filesystem::path& file) {
@@ -181,6 +196,7 @@ bool replay(const std::filesystem::path& file) {
     while (::wait4(child, &status, 0, &usage) < 0 && errno == EINTR) {
     }
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    remove_input_files_of(child);
     if (WIFSIGNALED(status)) {
         std::fprintf(stderr, "replay: FAILED %s: %s after %.3f s\n", file.c_str(),
                      strsignal(WTERMSIG(status)), seconds);
