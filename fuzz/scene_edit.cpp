@@ -1,7 +1,7 @@
 // Harness scene_edit: the body of a POST /api/edit of `glint serve`, through what the server does with
-// it (preview_server.cpp, PreviewSession::apply): parse the JSON (a body that is not JSON is a 400 and
-// stops there), parse_edits, apply_edits to the loaded scene's tree, write the tree as YAML, parse that
-// and build it; then render it tiny. The loaded scene is fixed (below): one of every material, so that
+// it (apply_edit_request in scene_edit.hpp: the JSON and its bounds, the edits, the rule that an edit
+// names no new file, the preview's limits, the YAML written and parsed back), then built as the session
+// builds it and rendered tiny. The loaded scene is fixed (below): one of every material, so that
 // edits of their parameters reach every material's checks.
 //
 // Findings: a crash, a leak, a hang, unbounded memory, an exception other than EditError and SceneError
@@ -10,11 +10,11 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <string_view>
 
 #include "fuzz_support.hpp"
 #include "glint/scene/scene_desc.hpp"
 #include "glint/scene/scene_writer.hpp"
-#include "glint/serve/preview_session.hpp"
 #include "glint/serve/scene_edit.hpp"
 
 namespace {
@@ -56,26 +56,17 @@ const glint::SceneDesc& loaded_scene() {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     const glint::SceneDesc& loaded = loaded_scene();
-    const nlohmann::json body =
-        nlohmann::json::parse(reinterpret_cast<const char*>(data), reinterpret_cast<const char*>(data) + size,
-                              nullptr, /*allow_exceptions=*/false);
-    if (body.is_discarded()) {
-        return 0;  // 400: the request body is not valid JSON
-    }
     try {
-        glint::Node root = loaded.root;
-        glint::apply_edits(root, glint::parse_edits(body));
-        const std::string yaml = glint::write_scene_yaml(root);
-        const glint::SceneDesc edited =
-            glint::parse_scene_text(yaml, "<scene in the browser>", loaded.base_dir);
-        GLINT_FUZZ_CHECK(glint::same_tree(edited.root, root));
-        // As the session builds it (no overrides), with its size limit; then tiny, to render.
-        const glint::Scene as_served = glint::build_scene(edited);
-        if (static_cast<std::int64_t>(as_served.settings.width) * as_served.settings.height >
-            glint::PreviewSession::kMaxPixels) {
-            return 0;  // 422: the session refuses it
-        }
-        const glint::Scene scene = glint::build_scene(edited, glint::fuzz::tiny_render());
+        // The server's whole path from a body to a scene, without sockets: JSON and its bounds, the
+        // edits, the file-reference rule, the preview's limits, and the written YAML parsed back.
+        const glint::EditedScene edited =
+            glint::apply_edit_request(loaded, std::string_view(reinterpret_cast<const char*>(data), size));
+        // What it hands over must read back as the same tree (else a saved scene would not load).
+        GLINT_FUZZ_CHECK(glint::same_tree(
+            glint::parse_scene_text(edited.yaml, "<scene in the browser>", loaded.base_dir).root,
+            edited.desc.root));
+        glint::build_scene(edited.desc);  // as the session builds it (it reads only the scene's files)
+        const glint::Scene scene = glint::build_scene(edited.desc, glint::fuzz::tiny_render());
         glint::fuzz::render_tiny(scene);
     } catch (const glint::EditError& e) {
         glint::fuzz::refused(e);

@@ -199,6 +199,25 @@ StbHeader check_png(const unsigned char* data, std::size_t size, const std::stri
     header.channels = colour_type == 3 ? 3 : samples;
     header.sixteen_bit = depth == 16;
     check_declared_size(name, "PNG", header.width, header.height);
+    // stb_image grows its buffer to a chunk's declared length before it reads the chunk, so a 2 GiB
+    // length in a 100-byte file would be allocated: every chunk up to IEND must lie within the file.
+    for (std::size_t at = 8; at + 8 <= size;) {
+        const std::uint64_t length = bytes.be32(at);
+        const std::uint64_t end = at + 12 + length;  // length, type, data, CRC
+        if (end > size) {
+            std::string type(reinterpret_cast<const char*>(data + at + 4), 4);
+            for (char& c : type) {
+                c = c >= 0x20 && c < 0x7f ? c : '?';  // a hostile type may hold any byte
+            }
+            fail(name, "PNG chunk '" + type + "' at byte " + std::to_string(at) + " declares " +
+                           std::to_string(length) + " bytes of data, but the file has " +
+                           std::to_string(size) + " bytes");
+        }
+        if (bytes.has(at + 4, "IEND")) {
+            break;
+        }
+        at = static_cast<std::size_t>(end);
+    }
     const std::uint64_t pixel_bytes =
         ceil_div(static_cast<std::uint64_t>(header.width * header.height) * samples * depth, 8);
     needed = ceil_div(pixel_bytes, 1032);
