@@ -81,17 +81,27 @@ function edit(...edits) {
   flush();
 }
 
+// POSTs JSON. The server closes a keep-alive connection after 2 s idle (so idle clients cannot hold its
+// connection slots); a request the browser sends on such a connection just as it closes fails as a
+// network error, and browsers retry only idempotent requests by themselves. Both of our POSTs may be
+// repeated (an edit sets values, a focus query reads), so a network failure is retried once, on a new
+// connection.
+async function postJson(url, value) {
+  const send = () => fetch(url, {method: 'POST', headers: {'Content-Type': 'application/json'}, body: JSON.stringify(value)});
+  try {
+    return await send();
+  } catch (error) {
+    return await send();
+  }
+}
+
 async function flush() {
   if (inFlight || pending.size === 0) return;
   const edits = [...pending.values()];
   pending = new Map();
   inFlight = true;
   try {
-    const response = await fetch('/api/edit', {
-      method: 'POST',
-      headers: {'Content-Type': 'application/json'},
-      body: JSON.stringify({edits}),
-    });
+    const response = await postJson('/api/edit', {edits});
     const body = await response.json();
     if (response.ok) {
       showError('');
@@ -426,7 +436,7 @@ function filmPoint(event) {
 
 async function focusAt(event) {
   const point = filmPoint(event);
-  const response = await fetch('/api/focus', {method: 'POST', headers: {'Content-Type': 'application/json'}, body: JSON.stringify(point)});
+  const response = await postJson('/api/focus', point);
   const hit = await response.json();
   if (!response.ok) return showError(hit.error);
   if (!hit.hit) return showError('Nothing there to focus on: the ray leaves the scene.');
