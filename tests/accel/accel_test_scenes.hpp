@@ -43,11 +43,9 @@ inline std::vector<std::unique_ptr<Shape>> random_spheres(int count, std::uint64
     return shapes;
 }
 
-// A closed sphere of triangles: a subdivided octahedron projected on the unit sphere, vertices shared.
-inline MeshData tessellated_sphere(int subdivisions, double radius = 1, const Vec3& center = {}) {
-    MeshData mesh;
-    mesh.positions = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
-    mesh.triangles = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
+// Splits each triangle of a mesh on the unit sphere into four, `subdivisions` times, putting each new
+// vertex (an edge's midpoint, shared by the edge's two triangles) back on the sphere.
+inline void subdivide_on_unit_sphere(MeshData& mesh, int subdivisions) {
     for (int s = 0; s < subdivisions; ++s) {
         std::vector<std::array<std::uint32_t, 3>> finer;
         std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> midpoint;
@@ -69,6 +67,14 @@ inline MeshData tessellated_sphere(int subdivisions, double radius = 1, const Ve
         }
         mesh.triangles = std::move(finer);
     }
+}
+
+// A closed sphere of triangles: a subdivided octahedron projected on the unit sphere, vertices shared.
+inline MeshData tessellated_sphere(int subdivisions, double radius = 1, const Vec3& center = {}) {
+    MeshData mesh;
+    mesh.positions = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    mesh.triangles = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
+    subdivide_on_unit_sphere(mesh, subdivisions);
     for (Vec3& p : mesh.positions) {
         p = center + radius * p;
     }
@@ -92,26 +98,7 @@ inline MeshData displaced_blob(int subdivisions = 6) {
     mesh.triangles = {{0, 11, 5},  {0, 5, 1},  {0, 1, 7},  {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
                       {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
                       {3, 8, 9},   {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
-    for (int s = 0; s < subdivisions; ++s) {
-        std::vector<std::array<std::uint32_t, 3>> finer;
-        std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> midpoint;
-        auto mid = [&](std::uint32_t a, std::uint32_t b) {
-            const auto [it, inserted] =
-                midpoint.try_emplace(std::minmax(a, b), static_cast<std::uint32_t>(mesh.positions.size()));
-            if (inserted) {
-                mesh.positions.push_back(normalize(mesh.positions[a] + mesh.positions[b]));
-            }
-            return it->second;
-        };
-        for (const auto& t : mesh.triangles) {
-            const std::uint32_t ab = mid(t[0], t[1]), bc = mid(t[1], t[2]), ca = mid(t[2], t[0]);
-            finer.push_back({t[0], ab, ca});
-            finer.push_back({ab, t[1], bc});
-            finer.push_back({ca, bc, t[2]});
-            finer.push_back({ab, bc, ca});
-        }
-        mesh.triangles = std::move(finer);
-    }
+    subdivide_on_unit_sphere(mesh, subdivisions);
     const Vec3 scale{0.08, 0.068, 0.056};
     const Vec3 offset{-0.017, 0.11, -0.002};
     for (Vec3& p : mesh.positions) {
