@@ -145,20 +145,26 @@ try {
   // in the tables the page sets focus_distance to the hit's depth (the unit sphere at (0, 1, 0) seen
   // from about 7 away); with only a pinhole, the server's message says the camera takes no focus.
   const scene5 = await page.evaluate(() => fetch('/api/scene').then((r) => r.json()));
-  const generation5 = scene5.generation;
   const target = scene5.scene.camera.look_at;
   assert.deepEqual(target, [0, 0.8, 0]);
+  const frameGeneration5 = (await stats(page)).generation;
   await page.locator('#image').dblclick({position: {x: box.width / 2, y: box.height / 2}});
-  await page.waitForFunction(async (g) => !document.getElementById('error').hidden ||
-    (await fetch('/api/scene').then((r) => r.json())).generation > g, generation5);
+  // Wait (a synchronous predicate: Playwright does not await a promise a predicate returns, which
+  // made this wait end at once) until the error shows or the frames' generation moves on, and take the
+  // error's text in the same evaluation, since a later read could find it already cleared.
+  const outcome = await (await page.waitForFunction((g) => {
+    const error = document.getElementById('error');
+    if (!error.hidden) return {error: error.textContent};
+    return Number(document.getElementById('stats').dataset.generation) > g && {changed: true};
+  }, frameGeneration5)).jsonValue();
   const focused = await page.evaluate(() => fetch('/api/scene').then((r) => r.json()));
-  if (focused.generation > generation5) {
+  if (outcome.changed) {
     const eye = focused.scene.camera.eye;
     const toCentre = Math.hypot(eye[0], eye[1] - 1, eye[2]);
     log('focused at', focused.scene.camera.focus_distance, 'with camera', focused.scene.camera.type);
     assert.ok(Math.abs(focused.scene.camera.focus_distance - (toCentre - 1)) < 0.15, 'focus on the sphere\'s front');
   } else {
-    const text = await page.$eval('#error', (e) => e.textContent);
+    const text = outcome.error;
     log('focus on a pinhole:', text.split('\n')[0]);
     assert.match(text, /focus_distance/);
   }
