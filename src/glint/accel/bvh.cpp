@@ -1,6 +1,7 @@
 #include "glint/accel/bvh.hpp"
 
 #include <chrono>
+#include <limits>
 
 #include "glint/geometry/sphere.hpp"
 
@@ -13,7 +14,13 @@ BvhAccelerator::BvhAccelerator(std::span<const Shape* const> shapes) : all_(shap
     for (std::size_t i = 0; i < shapes.size(); ++i) {
         const Bounds3 b = shapes[i]->bounds();
         bounds_.grow(b);
-        if (b.is_finite()) {
+        // The tree stores boxes in float: a box beyond float's range (a sphere of radius 1e116) would
+        // saturate to infinity there, and a box infinite in every direction broke the traversal. Such
+        // shapes are tested apart, as unbounded ones are.
+        const double float_max = std::numeric_limits<float>::max();
+        const bool fits_float =
+            b.is_finite() && max_component(abs(b.lo)) <= float_max && max_component(abs(b.hi)) <= float_max;
+        if (fits_float) {
             bounded_bounds_.grow(b);
             boxes.push_back(b);
             bounded.push_back(static_cast<std::uint32_t>(i));

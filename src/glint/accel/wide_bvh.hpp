@@ -160,6 +160,22 @@ class WideBvh {
     bool traverse(const Ray& ray, double& t_max, Leaf& leaf) const;
 #ifdef GLINT_BVH_HAVE_AVX2_PATH
     // The same loop compiled for AVX2, so that the node test and the owner's leaf test are inlined.
+    // Every leaf in turn, for rays the box tests cannot take (beyond_float_traversal).
+    template <bool kAnyHit, class Leaf>
+    bool every_leaf(double& t_max, Leaf& leaf) const {
+        bool found = false;
+        for (const WideBvhNode& node : nodes_) {
+            for (int c = 0; c < WideBvhNode::kWidth; ++c) {
+                if (node.count[c] > 0 && leaf(node.child[c], node.count[c], t_max, std::false_type{})) {
+                    if constexpr (kAnyHit) {
+                        return true;
+                    }
+                    found = true;
+                }
+            }
+        }
+        return found;
+    }
     template <bool kAnyHit, class Leaf>
     bool traverse_avx2(const Ray& ray, double& t_max, Leaf& leaf) const;
 #endif
@@ -375,8 +391,21 @@ __attribute__((target("avx2,fma"))) bool WideBvh::traverse_avx2(const Ray& ray, 
 }
 #endif
 
+// A ray that starts (or points) beyond what float traversal can represent, such as a shadow ray from a
+// point on a sphere of radius 1e116, would turn the slab tests into inf − inf; it is answered by testing
+// every leaf in turn. Such rays occur only in scenes beyond float's range.
+inline bool beyond_float_traversal(const Ray& ray) {
+    constexpr double kLargest = 1e30;
+    return !(std::abs(ray.origin.x) < kLargest && std::abs(ray.origin.y) < kLargest &&
+             std::abs(ray.origin.z) < kLargest && std::isfinite(ray.direction.x) &&
+             std::isfinite(ray.direction.y) && std::isfinite(ray.direction.z));
+}
+
 template <class Leaf>
 bool WideBvh::intersect(const Ray& ray, double& t_max, Leaf&& leaf) const {
+    if (beyond_float_traversal(ray)) [[unlikely]] {
+        return every_leaf<false>(t_max, leaf);
+    }
 #ifdef GLINT_BVH_HAVE_AVX2_PATH
     if (uses_avx2()) {
         return traverse_avx2<false>(ray, t_max, leaf);
@@ -387,6 +416,9 @@ bool WideBvh::intersect(const Ray& ray, double& t_max, Leaf&& leaf) const {
 
 template <class Leaf>
 bool WideBvh::occluded(const Ray& ray, double t_max, Leaf&& leaf) const {
+    if (beyond_float_traversal(ray)) [[unlikely]] {
+        return every_leaf<true>(t_max, leaf);
+    }
 #ifdef GLINT_BVH_HAVE_AVX2_PATH
     if (uses_avx2()) {
         return traverse_avx2<true>(ray, t_max, leaf);

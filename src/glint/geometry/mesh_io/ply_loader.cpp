@@ -421,8 +421,17 @@ class PlyParser {
                                 ? static_cast<double>((bytes_left + 1) / 2)
                                 : static_cast<double>(bytes_left / type_size(property.type));
         if (count > room) {
-            fail_data("a list of " + std::to_string(static_cast<std::uint64_t>(count)) +
-                      " items runs past the end of the file");
+            // A float count may be beyond any integer (3.2e41): converting it would be undefined, so
+            // such a count is printed as the number it is.
+            std::ostringstream what;
+            what << "a list of ";
+            if (count < 0x1p63) {
+                what << static_cast<std::uint64_t>(count);
+            } else {
+                what << count;
+            }
+            what << " items runs past the end of the file";
+            fail_data(what.str());
         }
         return static_cast<std::uint64_t>(count);
     }
