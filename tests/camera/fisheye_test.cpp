@@ -2,7 +2,7 @@
 
 #include "camera/camera_test_util.hpp"
 #include "glint/core/math.hpp"
-#include "glint/scene/diagnostics.hpp"
+#include "glint/params/diagnostics.hpp"
 
 namespace glint {
 namespace {

@@ -6,7 +6,7 @@
 
 #include "camera/camera_test_util.hpp"
 #include "glint/image/image_io.hpp"
-#include "glint/scene/diagnostics.hpp"
+#include "glint/params/diagnostics.hpp"
 
 namespace glint {
 namespace {

@@ -1,6 +1,6 @@
 #include "geometry/shape_testing.hpp"
 
-#include "glint/scene/diagnostics.hpp"
+#include "glint/params/diagnostics.hpp"
 #include "glint/scene/scene.hpp"
 
 namespace glint::testing {

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "glint/light/area.hpp"
-#include "glint/scene/diagnostics.hpp"
+#include "glint/params/diagnostics.hpp"
 #include "integrator/radiance_util.hpp"
 
 namespace glint {

@@ -2,7 +2,7 @@
 // error at its own line.
 #include <gtest/gtest.h>
 
-#include "glint/scene/diagnostics.hpp"
+#include "glint/params/diagnostics.hpp"
 #include "glint/scene/scene.hpp"
 #include "glint/scene/scene_desc.hpp"
 #include "material/bsdf_checks.hpp"

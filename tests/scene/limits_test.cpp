@@ -6,9 +6,9 @@
 
 #include <filesystem>
 
-#include "glint/render/settings.hpp"
 #include "glint/scene/scene.hpp"
 #include "glint/scene/scene_desc.hpp"
+#include "glint/world/settings.hpp"
 #include "test_util.hpp"
 
 namespace glint {

@@ -10,7 +10,7 @@
 
 #include "glint/core/hash.hpp"
 #include "glint/image/image_io.hpp"
-#include "glint/scene/build_context.hpp"
+#include "glint/params/build_context.hpp"
 #include "glint/texture/checker.hpp"
 #include "glint/texture/image_texture.hpp"
 #include "glint/texture/noise.hpp"

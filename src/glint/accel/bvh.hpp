@@ -1,11 +1,11 @@
 #pragma once
 
 #include "glint/accel/accelerator.hpp"
-#include "glint/accel/wide_bvh.hpp"
+#include "glint/bvh/wide_bvh.hpp"
 
 namespace glint {
 
-// The scene's BVH: an 8-wide BVH (accel/wide_bvh.hpp) whose leaves are the scene's bounded shapes,
+// The scene's BVH: an 8-wide BVH (bvh/wide_bvh.hpp) whose leaves are the scene's bounded shapes,
 // called virtually (a mesh is one such leaf, with its own BVH inside: a two-level hierarchy).
 // Unbounded shapes (planes) have no box to sort, so they are kept aside and tested for every ray; so is
 // a lone bounded shape (a scene of one mesh), for which a tree of one leaf would only add a traversal.

@@ -7,7 +7,7 @@
 #include <limits>
 #include <stdexcept>
 
-#include "glint/accel/wide_bvh.hpp"
+#include "glint/bvh/wide_bvh.hpp"
 #include "glint/geometry/mesh.hpp"
 
 namespace glint {

@@ -1,7 +1,7 @@
 #include "glint/camera/camera.hpp"
 
 #include "glint/core/math.hpp"
-#include "glint/scene/params.hpp"
+#include "glint/params/params.hpp"
 
 namespace glint {
 

@@ -1,7 +1,7 @@
 // Orthographic {type: orthographic, eye, look_at, up, height}.
 #include "glint/camera/orthographic.hpp"
 
-#include "glint/scene/params.hpp"
+#include "glint/params/params.hpp"
 
 namespace glint {
 

@@ -1,7 +1,7 @@
 // Pinhole {type: pinhole, eye, look_at, up, fov | view_distance + zoom}.
 #include "glint/camera/pinhole.hpp"
 
-#include "glint/scene/params.hpp"
+#include "glint/params/params.hpp"
 
 namespace glint {
 

@@ -2,7 +2,7 @@
 #include "glint/camera/spherical.hpp"
 
 #include "glint/core/math.hpp"
-#include "glint/scene/params.hpp"
+#include "glint/params/params.hpp"
 
 namespace glint {
 

@@ -2,8 +2,8 @@
 //            lens_radius | f_stop + focal_length, focus_distance}.
 #include "glint/camera/thin_lens.hpp"
 
+#include "glint/params/params.hpp"
 #include "glint/sampling/warps.hpp"
-#include "glint/scene/params.hpp"
 
 namespace glint {
 

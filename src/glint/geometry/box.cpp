@@ -2,7 +2,7 @@
 // uv on each face: the two other coordinates, as fractions of the box's extent, in axis order.
 #include "glint/geometry/box.hpp"
 
-#include "glint/scene/params.hpp"
+#include "glint/params/params.hpp"
 
 namespace glint {
 

@@ -5,7 +5,7 @@
 #include "glint/geometry/disk.hpp"
 
 #include "glint/geometry/planar.hpp"
-#include "glint/scene/params.hpp"
+#include "glint/params/params.hpp"
 
 namespace glint {
 

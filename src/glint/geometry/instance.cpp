@@ -6,7 +6,7 @@
 // An ellipsoid is a sphere with scale [a, b, c].
 #include "glint/geometry/instance.hpp"
 
-#include "glint/scene/params.hpp"
+#include "glint/params/params.hpp"
 
 namespace glint {
 

@@ -9,8 +9,8 @@
 #include <stdexcept>
 
 #include "glint/geometry/triangle.hpp"
-#include "glint/scene/build_context.hpp"
-#include "glint/scene/params.hpp"
+#include "glint/params/build_context.hpp"
+#include "glint/params/params.hpp"
 
 namespace glint {
 namespace {

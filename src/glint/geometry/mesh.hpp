@@ -4,7 +4,7 @@
 #include <span>
 #include <vector>
 
-#include "glint/accel/wide_bvh.hpp"
+#include "glint/bvh/wide_bvh.hpp"
 #include "glint/core/uninitialized_allocator.hpp"
 #include "glint/geometry/mesh_io/mesh_data.hpp"
 #include "glint/geometry/shape.hpp"

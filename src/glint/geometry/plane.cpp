@@ -2,7 +2,7 @@
 #include "glint/geometry/plane.hpp"
 
 #include "glint/core/frame.hpp"
-#include "glint/scene/params.hpp"
+#include "glint/params/params.hpp"
 
 namespace glint {
 

@@ -4,7 +4,7 @@
 #include "glint/geometry/rectangle.hpp"
 
 #include "glint/geometry/planar.hpp"
-#include "glint/scene/params.hpp"
+#include "glint/params/params.hpp"
 
 namespace glint {
 

@@ -1,7 +1,7 @@
 // Sphere {type: sphere, center: [x, y, z], radius: r}.
 #include "glint/geometry/sphere.hpp"
 
-#include "glint/scene/params.hpp"
+#include "glint/params/params.hpp"
 
 namespace glint {
 

@@ -6,7 +6,7 @@
 
 #include "glint/core/polynomial.hpp"
 #include "glint/geometry/planar.hpp"
-#include "glint/scene/params.hpp"
+#include "glint/params/params.hpp"
 
 namespace glint {
 

@@ -2,7 +2,7 @@
 #include "glint/integrator/path.hpp"
 #include "glint/integrator/raycast.hpp"
 #include "glint/integrator/whitted.hpp"
-#include "glint/render/settings.hpp"
+#include "glint/world/settings.hpp"
 
 namespace glint {
 

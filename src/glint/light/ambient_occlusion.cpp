@@ -2,7 +2,7 @@
 
 #include "glint/core/frame.hpp"
 #include "glint/material/material.hpp"
-#include "glint/scene/params.hpp"
+#include "glint/params/params.hpp"
 
 namespace glint {
 

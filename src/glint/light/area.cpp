@@ -2,8 +2,8 @@
 
 #include "glint/core/frame.hpp"
 #include "glint/geometry/sphere.hpp"
-#include "glint/scene/build_context.hpp"
-#include "glint/scene/params.hpp"
+#include "glint/params/build_context.hpp"
+#include "glint/params/params.hpp"
 
 namespace glint {
 

@@ -1,6 +1,6 @@
 #include "glint/light/directional.hpp"
 
-#include "glint/scene/params.hpp"
+#include "glint/params/params.hpp"
 
 namespace glint {
 

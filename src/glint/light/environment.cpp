@@ -1,9 +1,9 @@
 #include "glint/light/environment.hpp"
 
 #include "glint/image/image_io.hpp"
+#include "glint/params/build_context.hpp"
+#include "glint/params/params.hpp"
 #include "glint/sampling/warps.hpp"
-#include "glint/scene/build_context.hpp"
-#include "glint/scene/params.hpp"
 
 namespace glint {
 

@@ -8,7 +8,7 @@
 #include "glint/material/dielectric.hpp"
 
 #include "glint/material/fresnel.hpp"
-#include "glint/scene/params.hpp"
+#include "glint/params/params.hpp"
 
 namespace glint {
 

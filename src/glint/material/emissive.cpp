@@ -4,7 +4,7 @@
 //   two_sided  default false: emit only to the side of the outward normal.
 #include "glint/material/emissive.hpp"
 
-#include "glint/scene/params.hpp"
+#include "glint/params/params.hpp"
 
 namespace glint {
 

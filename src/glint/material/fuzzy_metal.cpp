@@ -5,7 +5,7 @@
 #include "glint/material/fuzzy_metal.hpp"
 
 #include "glint/material/mirror.hpp"
-#include "glint/scene/params.hpp"
+#include "glint/params/params.hpp"
 
 namespace glint {
 

@@ -3,7 +3,7 @@
 #include "glint/material/matte.hpp"
 
 #include "glint/core/frame.hpp"
-#include "glint/scene/params.hpp"
+#include "glint/params/params.hpp"
 
 namespace glint {
 

@@ -8,7 +8,7 @@
 #include "glint/core/frame.hpp"
 #include "glint/material/fresnel.hpp"
 #include "glint/material/mirror.hpp"
-#include "glint/scene/params.hpp"
+#include "glint/params/params.hpp"
 
 namespace glint {
 

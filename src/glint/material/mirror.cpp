@@ -1,7 +1,7 @@
 // Mirror {type: mirror, reflectance}: reflectance kr, colour or texture in [0, 1], default 1.
 #include "glint/material/mirror.hpp"
 
-#include "glint/scene/params.hpp"
+#include "glint/params/params.hpp"
 
 namespace glint {
 

@@ -10,7 +10,7 @@
 #include "glint/camera/camera.hpp"
 #include "glint/light/light.hpp"
 #include "glint/material/material.hpp"
-#include "glint/render/settings.hpp"
+#include "glint/world/settings.hpp"
 
 namespace glint {
 

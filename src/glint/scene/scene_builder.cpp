@@ -7,12 +7,12 @@
 #include "glint/integrator/integrator.hpp"
 #include "glint/light/area.hpp"
 #include "glint/material/matte.hpp"
+#include "glint/params/build_context.hpp"
+#include "glint/params/params.hpp"
+#include "glint/params/table_lookup.hpp"
 #include "glint/sampling/sampler.hpp"
-#include "glint/scene/build_context.hpp"
-#include "glint/scene/params.hpp"
 #include "glint/scene/scene.hpp"
 #include "glint/scene/scene_desc.hpp"
-#include "glint/scene/table_lookup.hpp"
 
 namespace glint {
 

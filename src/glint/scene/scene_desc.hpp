@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <string>
 
-#include "glint/scene/node.hpp"
+#include "glint/params/node.hpp"
 
 namespace glint {
 

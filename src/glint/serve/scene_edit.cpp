@@ -5,9 +5,9 @@
 #include <cmath>
 #include <cstdlib>
 
-#include "glint/render/settings.hpp"
 #include "glint/scene/scene_writer.hpp"
 #include "glint/serve/serve_limits.hpp"
+#include "glint/world/settings.hpp"
 
 namespace glint {
 

@@ -27,7 +27,7 @@
 #include <string_view>
 #include <vector>
 
-#include "glint/scene/node.hpp"
+#include "glint/params/node.hpp"
 #include "glint/scene/scene_desc.hpp"
 
 namespace glint {

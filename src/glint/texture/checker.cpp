@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "glint/scene/params.hpp"
+#include "glint/params/params.hpp"
 
 namespace glint {
 

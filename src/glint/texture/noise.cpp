@@ -8,7 +8,7 @@
 #include <cmath>
 
 #include "glint/core/hash.hpp"
-#include "glint/scene/params.hpp"
+#include "glint/params/params.hpp"
 
 namespace glint {
 

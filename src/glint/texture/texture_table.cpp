@@ -2,9 +2,9 @@
 // texture. Adding a texture: a file here and a line in the table.
 #include <algorithm>
 
-#include "glint/scene/build_context.hpp"
-#include "glint/scene/params.hpp"
-#include "glint/scene/table_lookup.hpp"
+#include "glint/params/build_context.hpp"
+#include "glint/params/params.hpp"
+#include "glint/params/table_lookup.hpp"
 #include "glint/texture/checker.hpp"
 #include "glint/texture/image_texture.hpp"
 #include "glint/texture/noise.hpp"

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "glint/core/vec.hpp"
-#include "glint/scene/diagnostics.hpp"
+#include "glint/params/diagnostics.hpp"
 
 namespace glint {
 

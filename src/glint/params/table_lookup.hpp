@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "glint/scene/params.hpp"
+#include "glint/params/params.hpp"
 
 namespace glint {
 

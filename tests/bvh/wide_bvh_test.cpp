@@ -11,7 +11,7 @@
 #include <random>
 #include <string>
 
-#include "glint/accel/wide_bvh.hpp"
+#include "glint/bvh/wide_bvh.hpp"
 
 namespace glint {
 namespace {

@@ -1,4 +1,4 @@
-#include "glint/scene/diagnostics.hpp"
+#include "glint/params/diagnostics.hpp"
 
 #include <algorithm>
 #include <sstream>

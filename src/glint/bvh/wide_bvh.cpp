@@ -1,4 +1,4 @@
-#include "glint/accel/wide_bvh.hpp"
+#include "glint/bvh/wide_bvh.hpp"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>

@@ -1,4 +1,4 @@
-#include "glint/scene/params.hpp"
+#include "glint/params/params.hpp"
 
 #include <charconv>
 #include <cmath>

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "glint/scene/diagnostics.hpp"
+#include "glint/params/diagnostics.hpp"
 
 namespace glint {
 

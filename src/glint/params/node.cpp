@@ -1,4 +1,4 @@
-#include "glint/scene/node.hpp"
+#include "glint/params/node.hpp"
 
 namespace glint {
 

@@ -13,7 +13,7 @@
 
 #include "glint/core/color.hpp"
 #include "glint/core/vec.hpp"
-#include "glint/scene/node.hpp"
+#include "glint/params/node.hpp"
 
 namespace glint {
 
