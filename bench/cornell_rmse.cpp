@@ -14,6 +14,7 @@
 #include "glint/render/render.hpp"
 #include "glint/scene/scene.hpp"
 #include "glint/scene/scene_desc.hpp"
+#include "glint/scene/scene_set.hpp"
 
 namespace {
 
@@ -23,7 +24,7 @@ struct Run {
 };
 
 Run render_cornell(int size, std::uint32_t spp, std::uint64_t seed) {
-    glint::RenderOverrides overrides;
+    glint::RenderFlags overrides;
     overrides.width = size;
     overrides.height = size;
     overrides.samples_per_pixel = spp;

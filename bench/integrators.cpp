@@ -14,10 +14,11 @@
 #include <cstring>
 #include <string>
 
+#include "glint/params/diagnostics.hpp"
 #include "glint/render/render.hpp"
-#include "glint/scene/diagnostics.hpp"
 #include "glint/scene/scene.hpp"
 #include "glint/scene/scene_desc.hpp"
+#include "glint/scene/scene_set.hpp"
 
 namespace {
 
@@ -34,7 +35,7 @@ std::string best_accelerator() {
 
 void render_example(benchmark::State& state, const std::string& file, int width, int height,
                     std::uint32_t spp, int max_depth) {
-    glint::RenderOverrides overrides;
+    glint::RenderFlags overrides;
     overrides.width = width;
     overrides.height = height;
     overrides.samples_per_pixel = spp;
@@ -51,7 +52,7 @@ void render_example(benchmark::State& state, const std::string& file, int width,
     }
     std::uint64_t rays = 0;
     for (auto _ : state) {
-        glint::Film film(scene.settings.width, scene.settings.height);
+        glint::Film film(scene.view.settings.width, scene.view.settings.height);
         const glint::RenderStats stats = glint::render(scene, film);
         rays += stats.rays.total();
         benchmark::DoNotOptimize(film.pixel(0, 0));

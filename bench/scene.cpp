@@ -6,18 +6,19 @@
 #include "glint/render/render.hpp"
 #include "glint/scene/scene.hpp"
 #include "glint/scene/scene_desc.hpp"
+#include "glint/scene/scene_set.hpp"
 
 namespace {
 
 void BM_DefaultScene(benchmark::State& state) {
-    glint::RenderOverrides overrides;
+    glint::RenderFlags overrides;
     overrides.width = 640;
     overrides.height = 360;
     overrides.samples_per_pixel = 16;
     const glint::Scene scene = glint::build_scene(glint::default_scene(), overrides);
     std::uint64_t rays = 0;
     for (auto _ : state) {
-        glint::Film film(scene.settings.width, scene.settings.height);
+        glint::Film film(scene.view.settings.width, scene.view.settings.height);
         const glint::RenderStats stats = glint::render(scene, film);
         rays += stats.rays.total();
         benchmark::DoNotOptimize(film.pixel(0, 0));

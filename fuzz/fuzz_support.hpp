@@ -19,6 +19,7 @@
 #include "glint/image/film.hpp"
 #include "glint/render/render.hpp"
 #include "glint/scene/scene.hpp"
+#include "glint/scene/scene_set.hpp"
 
 namespace glint::fuzz {
 
@@ -83,22 +84,22 @@ inline std::filesystem::path assets_dir() {
 }
 
 // What the command line would impose to keep one execution in milliseconds: an 8×8 image, one sample,
-// few bounces, one thread. The scene's own `render:` values are still read and checked by the builder
-// (overrides apply after the checks), they are just not rendered at that size.
-inline RenderOverrides tiny_render() {
-    RenderOverrides overrides;
+// few bounces (and render_tiny runs on one thread). The flags replace the scene's own `render:` values,
+// so a harness checks those first with build_view(desc).
+inline RenderFlags tiny_render() {
+    RenderFlags overrides;
     overrides.width = 8;
     overrides.height = 8;
     overrides.samples_per_pixel = 1;
     overrides.max_depth = 3;
-    overrides.threads = 1;
     return overrides;
 }
 
 // Renders a scene built with tiny_render(). Rendering a checked scene must not fail: any exception
 // escapes to the harness's caller and is a finding.
-inline void render_tiny(const Scene& scene) {
-    Film film(scene.settings.width, scene.settings.height);
+inline void render_tiny(Scene& scene) {
+    scene.view.settings.threads = 1;
+    Film film(scene.view.settings.width, scene.view.settings.height);
     const RenderStats stats = render(scene, film);
     GLINT_FUZZ_CHECK(!stats.cancelled);
 }

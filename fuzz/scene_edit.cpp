@@ -66,7 +66,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             glint::parse_scene_text(edited.yaml, "<scene in the browser>", loaded.base_dir).root,
             edited.desc.root));
         glint::build_scene(edited.desc);  // as the session builds it (it reads only the scene's files)
-        const glint::Scene scene = glint::build_scene(edited.desc, glint::fuzz::tiny_render());
+        glint::Scene scene = glint::build_scene(edited.desc, glint::fuzz::tiny_render());
         glint::fuzz::render_tiny(scene);
     } catch (const glint::EditError& e) {
         glint::fuzz::refused(e);

@@ -16,7 +16,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     try {
         const glint::SceneDesc desc =
             glint::parse_scene_text(text, GLINT_FUZZ_SCENE_NAME, glint::fuzz::assets_dir());
-        const glint::Scene scene = glint::build_scene(desc, glint::fuzz::tiny_render());
+        glint::build_view(desc);  // the scene's own render block and camera, which the flags replace
+        glint::Scene scene = glint::build_scene(desc, glint::fuzz::tiny_render());
         glint::fuzz::render_tiny(scene);
     } catch (const glint::SceneError& e) {
         glint::fuzz::check_scene_error(e);

@@ -14,6 +14,7 @@
 #include "glint/render/render.hpp"
 #include "glint/scene/scene.hpp"
 #include "glint/scene/scene_desc.hpp"
+#include "glint/scene/scene_set.hpp"
 
 namespace glint::test {
 
@@ -71,13 +72,13 @@ inline CommandResult run_glint(const std::string& arguments) {
     return run_command(std::string("'") + GLINT_CLI_PATH + "' " + arguments);
 }
 
-inline Scene scene_from_text(const std::string& yaml, const RenderOverrides& overrides = {}) {
+inline Scene scene_from_text(const std::string& yaml, const RenderFlags& overrides = {}) {
     return build_scene(parse_scene_text(yaml, "test.yaml", "."), overrides);
 }
 
 // Renders a scene into a film of its own size.
 inline Film render_film(const Scene& scene, RenderStats* stats = nullptr) {
-    Film film(scene.settings.width, scene.settings.height);
+    Film film(scene.view.settings.width, scene.view.settings.height);
     const RenderStats s = render(scene, film);
     if (stats) {
         *stats = s;

@@ -158,7 +158,10 @@ function connectEvents() {
     const done = frame.samples >= frame.target;
     stats.textContent = `${frame.width}×${frame.height}  ·  ` +
       (frame.samples === 0 ? 'preview' : `${frame.samples} / ${frame.target} spp`) +
-      `  ·  ${frame.mrays_per_second.toFixed(1)} Mrays/s  ·  ${frame.seconds.toFixed(2)} s` + (done ? '  ·  done' : '');
+      `  ·  ${frame.mrays_per_second.toFixed(1)} Mrays/s  ·  ${frame.seconds.toFixed(2)} s` + (done ? '  ·  done' : '') +
+      // Non-finite samples are left out of the picture, as by glint render, and said, with the first.
+      (frame.nonfinite ? `  ·  ${frame.nonfinite.samples} NaN/∞ samples left out (first at pixel ` +
+        `${frame.nonfinite.x}, ${frame.nonfinite.y}, sample ${frame.nonfinite.sample})` : '');
     $('progress-bar').style.width = `${(100 * frame.samples) / Math.max(1, frame.target)}%`;
     if (state && frame.generation > state.generation) fetchState();  // another page changed the scene
   });
@@ -309,13 +312,20 @@ function buildRender() {
   const settings = state.settings;
   const box = $('render-fields');
   box.replaceChildren();
-  box.append(field('integrator', [selectInput(['render', 'integrator'], render.integrator ?? settings.integrator,
+  // The integrator and the sampler are a word or a map with a type and their own keys.
+  const typed = (key) => (render[key] && typeof render[key] === 'object') ?
+    {path: ['render', key, 'type'], value: render[key].type} : {path: ['render', key], value: render[key]};
+  const integrator = typed('integrator'), sampler = typed('sampler');
+  box.append(field('integrator', [selectInput(integrator.path, integrator.value ?? settings.integrator,
     state.integrators.map((i) => i.name))], state.integrators.map((i) => `${i.name}: ${i.summary}`).join('\n')));
-  box.append(field('sampler', [selectInput(['render', 'sampler'], render.sampler ?? settings.sampler,
+  box.append(field('sampler', [selectInput(sampler.path, sampler.value ?? settings.sampler,
     state.samplers.map((s) => s.name))], state.samplers.map((s) => `${s.name}: ${s.summary}`).join('\n')));
   box.append(field('samples', [numberInput(['render', 'samples'], render.samples ?? settings.samples, {min: 1, step: 1})],
     'samples per pixel to accumulate'));
-  box.append(field('max depth', sliderInput(['render', 'max_depth'], render.max_depth ?? settings.max_depth, ranges.max_depth),
+  // An integrator's own max_depth wins over the render block's.
+  const ownDepth = render.integrator && typeof render.integrator === 'object' && render.integrator.max_depth !== undefined;
+  box.append(field('max depth', sliderInput(ownDepth ? ['render', 'integrator', 'max_depth'] : ['render', 'max_depth'],
+    ownDepth ? render.integrator.max_depth : (render.max_depth ?? settings.max_depth), ranges.max_depth),
     'longest path, in bounces'));
   const current = `${state.width}×${state.height}`;
   const options = resolutions.map(([w, h]) => `${w}×${h}`);

@@ -32,7 +32,7 @@ int run_info(const std::string& scene_path) {
     }
     std::size_t meshes = 0, triangles = 0, vertices = 0, mesh_nodes = 0, mesh_bytes = 0;
     double mesh_build_seconds = 0;
-    for (const auto& shape : scene.shapes) {
+    for (const auto& shape : scene.world->shapes) {
         // A mesh placed by a `transform` is a mesh inside an instance: it counts the same.
         const glint::Shape* placed = shape.get();
         while (const auto* instance = dynamic_cast<const glint::Instance*>(placed)) {
@@ -50,7 +50,7 @@ int run_info(const std::string& scene_path) {
     // The scene's own BVH over its shapes, built again here so that its figures do not depend on the
     // accelerator the scene file chose.
     std::vector<const glint::Shape*> shapes;
-    for (const auto& s : scene.shapes) {
+    for (const auto& s : scene.world->shapes) {
         shapes.push_back(s.get());
     }
     const glint::BvhAccelerator top(shapes);
@@ -58,13 +58,14 @@ int run_info(const std::string& scene_path) {
 
     std::printf("scene        %s\n", scene_path.c_str());
     std::printf("primitives   %zu (%zu meshes, %zu other shapes, %zu unbounded kept outside the BVH)\n",
-                scene.shapes.size(), meshes, scene.shapes.size() - meshes, top.unbounded_count());
+                scene.world->shapes.size(), meshes, scene.world->shapes.size() - meshes,
+                top.unbounded_count());
     std::printf("triangles    %zu (%zu vertices)\n", triangles, vertices);
     std::printf("bounds       %s[%g, %g, %g] .. [%g, %g, %g]\n",
                 top.unbounded_count() > 0 ? "(bounded shapes) " : "", bounds.lo.x, bounds.lo.y, bounds.lo.z,
                 bounds.hi.x, bounds.hi.y, bounds.hi.z);
     std::printf("accelerator  %s (render default; --accel on `glint render` overrides)\n",
-                scene.settings.accelerator.c_str());
+                scene.view.settings.accelerator.c_str());
     const double build_seconds = mesh_build_seconds + top.build_seconds();
     std::printf("bvh build    %.3f s (meshes %.3f s, scene level %.3f s)\n", build_seconds,
                 mesh_build_seconds, top.build_seconds());

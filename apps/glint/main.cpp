@@ -17,13 +17,17 @@
 #include <filesystem>
 #include <iostream>
 #include <optional>
+#include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "commands.hpp"
 #include "glint/image/image_io.hpp"
 #include "glint/render/render.hpp"
 #include "glint/scene/scene.hpp"
 #include "glint/scene/scene_desc.hpp"
+#include "glint/scene/scene_set.hpp"
 
 namespace {
 
@@ -105,11 +109,9 @@ class ProgressBar {
 struct RenderOptions {
     std::string scene_path;
     std::string output;
-    std::optional<int> width, height, threads;
-    std::optional<std::uint32_t> spp;
-    std::optional<std::uint64_t> seed;
-    std::optional<std::string> sampler, integrator, accelerator;
-    std::optional<int> max_depth;
+    glint::RenderFlags flags;
+    std::optional<int> threads;     // not a scene key: it does not change the image
+    std::vector<std::string> sets;  // --set key.path=value, in order
     bool quiet = false;
 };
 
@@ -135,19 +137,18 @@ int run_render(const RenderOptions& options) {
     install_stop_handlers();
     glint::Scene scene;
     try {
-        const glint::SceneDesc desc =
+        glint::SceneDesc desc =
             options.scene_path.empty() ? glint::default_scene() : glint::load_scene_file(options.scene_path);
-        glint::RenderOverrides overrides;
-        overrides.width = options.width;
-        overrides.height = options.height;
-        overrides.threads = options.threads;
-        overrides.samples_per_pixel = options.spp;
-        overrides.seed = options.seed;
-        overrides.sampler = options.sampler;
-        overrides.integrator = options.integrator;
-        overrides.max_depth = options.max_depth;
-        overrides.accelerator = options.accelerator;
-        scene = glint::build_scene(desc, overrides);
+        // The flags are short forms of --set: each is an edit of the scene's tree, checked by the
+        // builder like the file; the --set edits follow them, in order.
+        glint::apply_flags(desc, options.flags);
+        for (const std::string& set : options.sets) {
+            glint::apply_set(desc, set);
+        }
+        scene = glint::build_scene(desc);
+        if (options.threads) {
+            scene.view.settings.threads = *options.threads;
+        }
     } catch (const glint::SceneError& e) {
         std::cerr << e.what() << '\n';
         return kExitBadInput;
@@ -157,7 +158,7 @@ int run_render(const RenderOptions& options) {
         return kExitInterrupted;
     }
 
-    glint::Film film(scene.settings.width, scene.settings.height);
+    glint::Film film(scene.view.settings.width, scene.view.settings.height);
     ProgressBar bar(!options.quiet && ::isatty(STDERR_FILENO));
     glint::RenderCallbacks callbacks;
     callbacks.progress = [&bar](double fraction) { bar.update(fraction); };
@@ -181,13 +182,14 @@ int run_render(const RenderOptions& options) {
     if (stats.cancelled) {
         // Each pixel is the mean of the samples it has: an unfinished render, not a darker one.
         std::fprintf(stderr, "glint: interrupted: wrote %s with %u of %u samples per pixel\n",
-                     output.string().c_str(), stats.samples_per_pixel, scene.settings.samples_per_pixel);
+                     output.string().c_str(), stats.samples_per_pixel, scene.view.settings.samples_per_pixel);
         return kExitInterrupted;
     }
     if (!options.quiet) {
         std::fprintf(stderr, "glint: %dx%d, %u spp, %.2f s, %.2f M rays, %.2f Mrays/s -> %s\n",
-                     scene.settings.width, scene.settings.height, stats.samples_per_pixel, stats.seconds,
-                     stats.rays.total() * 1e-6, stats.mrays_per_second(), output.string().c_str());
+                     scene.view.settings.width, scene.view.settings.height, stats.samples_per_pixel,
+                     stats.seconds, stats.rays.total() * 1e-6, stats.mrays_per_second(),
+                     output.string().c_str());
     }
     return 0;
 }
@@ -208,11 +210,11 @@ static int run(int argc, char** argv) {
         "-o,--output", options.output,
         "Output image: .png (8-bit sRGB), .pfm or .exr (linear float radiance); default: <scene>.png");
     // The ranges of these four are checked by the scene builder, which says why a value is too large.
-    render->add_option("--width", options.width, "Image width in pixels");
-    render->add_option("--height", options.height, "Image height in pixels");
-    render->add_option("--spp", options.spp, "Samples per pixel");
+    render->add_option("--width", options.flags.width, "Image width in pixels");
+    render->add_option("--height", options.flags.height, "Image height in pixels");
+    render->add_option("--spp", options.flags.samples_per_pixel, "Samples per pixel");
     render->add_option(
-        "--sampler", options.sampler, "Sample pattern (" + [] {
+        "--sampler", options.flags.sampler, "Sample pattern (" + [] {
             std::string names;
             for (const auto& n : glint::sampler_names()) {
                 names += (names.empty() ? "" : ", ") + n;
@@ -220,17 +222,17 @@ static int run(int argc, char** argv) {
             return names;
         }() + ")");
     render->add_option(
-        "--integrator", options.integrator, "How light is computed (" + [] {
+        "--integrator", options.flags.integrator, "How light is computed (" + [] {
             std::string names;
             for (const auto& n : glint::integrator_names()) {
                 names += (names.empty() ? "" : ", ") + n;
             }
             return names;
         }() + ")");
-    render->add_option("--max-depth", options.max_depth,
+    render->add_option("--max-depth", options.flags.max_depth,
                        "Longest path in bounces (whitted, path; at most 1024)");
     render->add_option(
-        "--accel", options.accelerator, "Ray accelerator (" + [] {
+        "--accel", options.flags.accelerator, "Ray accelerator (" + [] {
             std::string names;
             for (const auto& entry : glint::accelerator_table()) {
                 names += (names.empty() ? "" : ", ") + entry.name;
@@ -239,8 +241,11 @@ static int run(int argc, char** argv) {
         }() + "; default bvh)");
     render->add_option("--threads", options.threads, "Worker threads (default: all cores)")
         ->check(CLI::Range(1, 4096));
-    render->add_option("--seed", options.seed,
+    render->add_option("--seed", options.flags.seed,
                        "Random seed: the same seed gives the same image, bit for bit");
+    render->add_option("--set", options.sets,
+                       "Set any scene key, as the file would: key.path=value (repeatable; e.g. "
+                       "--set render.samples=64 --set camera.fov=30 --set objects.0.radius=2)");
     render->add_flag("-q,--quiet", options.quiet, "No progress bar and no summary");
     add_samples_command(app);
     add_serve_command(app);

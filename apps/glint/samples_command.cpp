@@ -23,12 +23,12 @@
 #include "commands.hpp"
 #include "glint/core/vec.hpp"
 #include "glint/image/image_io.hpp"
-#include "glint/render/settings.hpp"
 #include "glint/sampling/convergence.hpp"
 #include "glint/sampling/multijittered.hpp"
 #include "glint/sampling/pattern_stats.hpp"
 #include "glint/sampling/sampler.hpp"
 #include "glint/sampling/warps.hpp"
+#include "glint/world/settings.hpp"
 #include "plot_canvas.hpp"
 #include "samples_convergence.hpp"
 

@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include "generated_meshes.hpp"
 #include "glint/accel/accelerator.hpp"
 #include "glint/core/math.hpp"
 #include "glint/geometry/mesh.hpp"
@@ -105,33 +106,6 @@ inline MeshData displaced_blob(int subdivisions = 6) {
         const double r = 1 + 0.20 * std::sin(5 * p.x + 1) * std::sin(4 * p.y) +
                          0.12 * std::sin(9 * p.z + 2 * p.x) + 0.06 * std::sin(15 * p.y + 7 * p.z + 0.5);
         p = offset + Vec3{scale.x * r * p.x, scale.y * r * p.y, scale.z * r * p.z};
-    }
-    return mesh;
-}
-
-// A closed torus of exactly 2 · around · across triangles (a grid of quads that wraps both ways, its
-// vertices shared), its tube's radius rippled so that it is bumpy as well as not convex; built in
-// linear time, for meshes of millions of triangles.
-inline MeshData displaced_torus(std::uint32_t around, std::uint32_t across) {
-    MeshData mesh;
-    mesh.positions.reserve(std::size_t{around} * across);
-    for (std::uint32_t i = 0; i < around; ++i) {
-        const double u = 2 * kPi * i / around;
-        for (std::uint32_t j = 0; j < across; ++j) {
-            const double v = 2 * kPi * j / across;
-            const double tube =
-                0.35 * (1 + 0.2 * std::sin(7 * u) * std::sin(3 * v) + 0.05 * std::sin(40 * u + 9 * v));
-            const double ring = 1 + tube * std::cos(v);
-            mesh.positions.push_back({ring * std::cos(u), tube * std::sin(v), ring * std::sin(u)});
-        }
-    }
-    const auto vertex = [&](std::uint32_t i, std::uint32_t j) { return (i % around) * across + j % across; };
-    mesh.triangles.reserve(2 * std::size_t{around} * across);
-    for (std::uint32_t i = 0; i < around; ++i) {
-        for (std::uint32_t j = 0; j < across; ++j) {
-            mesh.triangles.push_back({vertex(i, j), vertex(i, j + 1), vertex(i + 1, j + 1)});
-            mesh.triangles.push_back({vertex(i, j), vertex(i + 1, j + 1), vertex(i + 1, j)});
-        }
     }
     return mesh;
 }

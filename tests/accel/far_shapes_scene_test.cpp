@@ -10,6 +10,7 @@
 #include "glint/render/render.hpp"
 #include "glint/scene/scene.hpp"
 #include "glint/scene/scene_desc.hpp"
+#include "glint/scene/scene_set.hpp"
 
 namespace glint {
 namespace {
@@ -42,15 +43,15 @@ TEST(FarShapesScene, ShapesBeyondFloatRangeRenderWithinASecond) {
         for (const std::string accelerator : {"bvh", "list"}) {
             const auto start = std::chrono::steady_clock::now();
             try {
-                RenderOverrides overrides;
+                RenderFlags overrides;
                 overrides.accelerator = accelerator;
                 const Scene scene =
                     build_scene(parse_scene_text(std::string(kHeader) + objects, "far.yaml", "."), overrides);
                 // Straight down at (−1.5, ·, −2.5): the first tile of the floor, or the small sphere.
                 Hit hit;
-                ASSERT_TRUE(scene.intersect({{-1.5, 5, -2.5}, {0, -1, 0}}, kInf, hit)) << accelerator;
+                ASSERT_TRUE(scene.world->intersect({{-1.5, 5, -2.5}, {0, -1, 0}}, kInf, hit)) << accelerator;
                 EXPECT_DOUBLE_EQ(hit.t, objects == kFloor ? 6.0 : 4.5) << accelerator;
-                Film film(scene.settings.width, scene.settings.height);
+                Film film(scene.view.settings.width, scene.view.settings.height);
                 render(scene, film);
             } catch (const SceneError& e) {
                 EXPECT_EQ(e.position().file->path, "far.yaml") << e.what();

@@ -23,7 +23,7 @@ TEST(AllCameras, LookingStraightDownOrUpWithTheDefaultUpGivesFiniteUnitRays) {
             for (const Point2 film :
                  {Point2{0, 0}, Point2{100, 50}, Point2{199.99, 99.99}, Point2{120, 60}}) {
                 for (const Point2 lens : {Point2{0, 0}, Point2{0.5, 0.5}, Point2{0.99, 0.3}}) {
-                    const Ray r = scene.camera->generate_ray(film, lens);
+                    const Ray r = scene.view.camera->generate_ray(film, lens);
                     ASSERT_TRUE(is_finite(r.origin));
                     ASSERT_TRUE(is_finite(r.direction));
                     if (sees_scene(r)) {
@@ -45,7 +45,8 @@ TEST(AllCameras, TheImageCentreLooksAtLookAt) {
             test::camera_scene("{type: " + entry.name + ", eye: [1, 2, 3], look_at: [-2, 0.5, 0]" +
                                required_keys(entry.name) + "}");
         for (const Point2 lens : {Point2{0.5, 0.5}, Point2{0.1, 0.8}}) {
-            EXPECT_LT(test::distance_to_line(scene.camera->generate_ray({100, 50}, lens), look_at), 1e-12);
+            EXPECT_LT(test::distance_to_line(scene.view.camera->generate_ray({100, 50}, lens), look_at),
+                      1e-12);
         }
     }
 }

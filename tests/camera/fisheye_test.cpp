@@ -10,7 +10,9 @@ namespace {
 TEST(Fisheye, AngleFromTheAxisGrowsLinearlyWithRadius) {
     // 200 × 100 image: the image circle is 100 pixels across, centred at (100, 50).
     const Scene scene = test::camera_scene("{type: fisheye, eye: [0, 0, 0], look_at: [0, 0, -1]}");
-    const auto dir = [&](double x, double y) { return scene.camera->generate_ray({x, y}, {}).direction; };
+    const auto dir = [&](double x, double y) {
+        return scene.view.camera->generate_ray({x, y}, {}).direction;
+    };
     EXPECT_LT(length(dir(100, 50) - Vec3(0, 0, -1)), 1e-15);
     // 180° across the circle: its top is straight up, its right edge straight right.
     EXPECT_LT(length(dir(100, 0) - Vec3(0, 1, 0)), 1e-15);
@@ -26,15 +28,16 @@ TEST(Fisheye, AngleFromTheAxisGrowsLinearlyWithRadius) {
 TEST(Fisheye, ThreeSixtyDegreesSeesBehindAtTheRim) {
     const Scene scene =
         test::camera_scene("{type: fisheye, eye: [0, 0, 0], look_at: [0, 0, -1], fov: 360}", 100, 100);
-    EXPECT_LT(length(scene.camera->generate_ray({50, 25}, {}).direction - Vec3(0, 1, 0)), 1e-15);
-    EXPECT_LT(length(scene.camera->generate_ray({100, 50}, {}).direction - Vec3(0, 0, 1)), 1e-15);
+    EXPECT_LT(length(scene.view.camera->generate_ray({50, 25}, {}).direction - Vec3(0, 1, 0)), 1e-15);
+    EXPECT_LT(length(scene.view.camera->generate_ray({100, 50}, {}).direction - Vec3(0, 0, 1)), 1e-15);
 }
 
 TEST(Fisheye, OutsideTheImageCircleSeesNothingAndRendersBlack) {
     const Scene scene = test::camera_scene("{type: fisheye, eye: [0, 0, 0], look_at: [0, 0, -1], fov: 120}");
-    EXPECT_FALSE(sees_scene(scene.camera->generate_ray({10, 50}, {})));   // left of the circle
-    EXPECT_FALSE(sees_scene(scene.camera->generate_ray({140, 90}, {})));  // a corner of the circle's square
-    EXPECT_TRUE(sees_scene(scene.camera->generate_ray({140, 70}, {})));
+    EXPECT_FALSE(sees_scene(scene.view.camera->generate_ray({10, 50}, {})));  // left of the circle
+    EXPECT_FALSE(
+        sees_scene(scene.view.camera->generate_ray({140, 90}, {})));  // a corner of the circle's square
+    EXPECT_TRUE(sees_scene(scene.view.camera->generate_ray({140, 70}, {})));
     // Rendered against a white background: black outside the circle, white inside, no NaN.
     const Scene lit = test::scene_from_text(
         "render: {width: 40, height: 20, samples: 4}\n"

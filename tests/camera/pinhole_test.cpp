@@ -61,7 +61,7 @@ Scene camera_scene(const std::string& camera, int width = 200, int height = 100)
 
 TEST(Pinhole, TheImageCentreLooksAtLookAt) {
     const Scene scene = camera_scene("{eye: [1, 2, 3], look_at: [-2, 0.5, 0], fov: 50}");
-    const Ray r = scene.camera->generate_ray({100, 50}, {0.5, 0.5});
+    const Ray r = scene.view.camera->generate_ray({100, 50}, {0.5, 0.5});
     EXPECT_EQ(r.origin, Vec3(1, 2, 3));
     EXPECT_NEAR(length(normalize(r.direction) - normalize(Vec3(-2, 0.5, 0) - Vec3(1, 2, 3))), 0, 1e-12);
 }
@@ -69,10 +69,10 @@ TEST(Pinhole, TheImageCentreLooksAtLookAt) {
 TEST(Pinhole, VerticalFieldOfViewSpansTheImageHeight) {
     const Scene scene = camera_scene("{eye: [0, 0, 0], look_at: [0, 0, -1], fov: 90}");
     // The top edge of the image is 45° above the axis; the right edge at atan(2) with a 2:1 image.
-    const Vec3 top = normalize(scene.camera->generate_ray({100, 0}, {}).direction);
+    const Vec3 top = normalize(scene.view.camera->generate_ray({100, 0}, {}).direction);
     EXPECT_NEAR(top.y, std::sqrt(0.5), 1e-12);
     EXPECT_NEAR(top.z, -std::sqrt(0.5), 1e-12);
-    const Vec3 right = normalize(scene.camera->generate_ray({200, 50}, {}).direction);
+    const Vec3 right = normalize(scene.view.camera->generate_ray({200, 50}, {}).direction);
     EXPECT_NEAR(std::atan2(right.x, -right.z), std::atan(2.0), 1e-12);
 }
 
@@ -82,12 +82,12 @@ TEST(Pinhole, KnownWorldPointProjectsToTheExpectedPixel) {
     const Scene scene = camera_scene("{eye: [0, 0, 0], look_at: [0, 0, -1], view_distance: 100}");
     const Vec3 point{1.5, -0.5, -5};
     const Point2 pixel{100 + 100 * 1.5 / 5, 50 + 100 * 0.5 / 5};
-    const Ray r = scene.camera->generate_ray(pixel, {});
+    const Ray r = scene.view.camera->generate_ray(pixel, {});
     const Vec3 d = normalize(r.direction);
     EXPECT_NEAR(length(d - normalize(point)), 0, 1e-12);
     // zoom 2 halves the pixel size: the same point is twice as far from the centre.
     const Scene zoomed = camera_scene("{eye: [0, 0, 0], look_at: [0, 0, -1], view_distance: 100, zoom: 2}");
-    const Ray rz = zoomed.camera->generate_ray({100 + 200 * 1.5 / 5, 50 + 200 * 0.5 / 5}, {});
+    const Ray rz = zoomed.view.camera->generate_ray({100 + 200 * 1.5 / 5, 50 + 200 * 0.5 / 5}, {});
     EXPECT_NEAR(length(normalize(rz.direction) - normalize(point)), 0, 1e-12);
 }
 

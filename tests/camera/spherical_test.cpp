@@ -11,8 +11,10 @@ TEST(Spherical, LongitudeAndLatitudeSpanTheImage) {
     for (const std::string type : {"spherical", "equirectangular"}) {
         const Scene scene =
             test::camera_scene("{type: " + type + ", eye: [1, 2, 3], look_at: [1, 2, 0]}", 360, 180);
-        const auto dir = [&](double x, double y) { return scene.camera->generate_ray({x, y}, {}).direction; };
-        EXPECT_EQ(scene.camera->generate_ray({10, 10}, {}).origin, Vec3(1, 2, 3));
+        const auto dir = [&](double x, double y) {
+            return scene.view.camera->generate_ray({x, y}, {}).direction;
+        };
+        EXPECT_EQ(scene.view.camera->generate_ray({10, 10}, {}).origin, Vec3(1, 2, 3));
         EXPECT_LT(length(dir(180, 90) - Vec3(0, 0, -1)), 1e-15);  // the centre looks at look_at
         EXPECT_LT(length(dir(270, 90) - Vec3(1, 0, 0)), 1e-15);   // 90° right
         EXPECT_LT(length(dir(90, 90) - Vec3(-1, 0, 0)), 1e-15);   // 90° left

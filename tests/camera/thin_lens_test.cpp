@@ -35,10 +35,10 @@ TEST(ThinLens, PointsOnTheFocusPlaneAreSharp) {
     const Vec3 eye{1, 2, 3};
     const Vec3 forward = normalize(Vec3(-2, 0.5, -1) - eye);
     for (const Point2 film : {Point2{100, 50}, Point2{3.5, 7.25}, Point2{180, 90}, Point2{150.5, 20}}) {
-        const Vec3 focus_point = at_depth(pinhole.camera->generate_ray(film, {}), eye, forward, 4);
+        const Vec3 focus_point = at_depth(pinhole.view.camera->generate_ray(film, {}), eye, forward, 4);
         double widest_origin = 0;
         for (const Point2 u : lens_grid(9)) {
-            const Ray r = lens.camera->generate_ray(film, u);
+            const Ray r = lens.view.camera->generate_ray(film, u);
             EXPECT_NEAR(length(r.direction), 1, 1e-12);
             // The ray starts on the lens: across the view direction, within the lens radius of the eye.
             EXPECT_NEAR(dot(r.origin - eye, forward), 0, 1e-12);
@@ -54,7 +54,7 @@ TEST(ThinLens, FocusDistanceDefaultsToTheLookAtPoint) {
     const Scene scene =
         camera_scene("{type: thin-lens, eye: [0, 1, 6], look_at: [0.5, 0, -1], lens_radius: 0.5}");
     for (const Point2 u : lens_grid(5)) {
-        const Ray r = scene.camera->generate_ray({100, 50}, u);  // the image centre
+        const Ray r = scene.view.camera->generate_ray({100, 50}, u);  // the image centre
         EXPECT_LT(test::distance_to_line(r, {0.5, 0, -1}), 1e-12);
     }
 }
@@ -74,12 +74,12 @@ TEST(ThinLens, BlursAPointIntoADiskOfTheCircleOfConfusionDiameter) {
         double widest = 0;
         std::vector<Vec3> focus_points;
         for (const Point2 u : lens_grid(17)) {
-            const Ray through_centre = scene.camera->generate_ray({100, 50}, u);
+            const Ray through_centre = scene.view.camera->generate_ray({100, 50}, u);
             const Vec3 lens_point = through_centre.origin;
             const Vec3 f = lens_point + (q - lens_point) * (z_f / z);
             // The film point whose pinhole ray hits F: (w/2 + d·F.x/z_f, h/2 − d·F.y/z_f).
             const Point2 film{100 + d * f.x / z_f, 50 - d * f.y / z_f};
-            const Ray ray = scene.camera->generate_ray(film, u);
+            const Ray ray = scene.view.camera->generate_ray(film, u);
             EXPECT_LT(length(ray.origin - lens_point), 1e-12);
             EXPECT_LT(test::distance_to_line(ray, q), 1e-9) << "z = " << z;
             for (const Vec3& other : focus_points) {
@@ -103,7 +103,7 @@ TEST(ThinLens, RaysOfOneFilmPointSpreadAwayFromTheFocusPlane) {
         std::vector<Vec3> crossings;
         double widest = 0;
         for (const Point2 u : lens_grid(17)) {
-            const Vec3 p = at_depth(scene.camera->generate_ray({130.25, 20.5}, u), {}, {0, 0, -1}, z);
+            const Vec3 p = at_depth(scene.view.camera->generate_ray({130.25, 20.5}, u), {}, {0, 0, -1}, z);
             for (const Vec3& other : crossings) {
                 widest = std::max(widest, length(other - p));
             }
@@ -120,12 +120,12 @@ TEST(ThinLens, FStopAndFocalLengthGiveTheLensRadius) {
     const Scene scene = camera_scene(
         "{type: thin-lens, eye: [0, 0, 0], look_at: [0, 0, -3], f_stop: 2.8, "
         "focal_length: 0.05}");
-    const auto* camera = dynamic_cast<const ThinLensCamera*>(scene.camera.get());
+    const auto* camera = dynamic_cast<const ThinLensCamera*>(scene.view.camera.get());
     ASSERT_NE(camera, nullptr);
     EXPECT_DOUBLE_EQ(camera->lens_radius(), 0.05 / 5.6);
     EXPECT_DOUBLE_EQ(camera->focus_distance(), 3);
     // The rim of the lens square lands on the aperture's edge.
-    EXPECT_NEAR(length(scene.camera->generate_ray({100, 50}, {1, 0.5}).origin), 0.05 / 5.6, 1e-15);
+    EXPECT_NEAR(length(scene.view.camera->generate_ray({100, 50}, {1, 0.5}).origin), 0.05 / 5.6, 1e-15);
 }
 
 TEST(ThinLens, ZeroLensRadiusIsThePinhole) {
@@ -133,8 +133,8 @@ TEST(ThinLens, ZeroLensRadiusIsThePinhole) {
     const Scene lens = camera_scene("{type: thin-lens, " + view + ", lens_radius: 0}");
     const Scene pinhole = camera_scene("{" + view + "}");
     for (const Point2 film : {Point2{0, 0}, Point2{77.7, 12.5}, Point2{199.9, 99.9}}) {
-        const Ray a = lens.camera->generate_ray(film, {0.9, 0.1});
-        const Ray b = pinhole.camera->generate_ray(film, {});
+        const Ray a = lens.view.camera->generate_ray(film, {0.9, 0.1});
+        const Ray b = pinhole.view.camera->generate_ray(film, {});
         EXPECT_EQ(a.origin, b.origin);
         EXPECT_LT(length(a.direction - b.direction), 1e-15);
     }

@@ -118,7 +118,7 @@ TEST(Instance, SameHitsAtAnyScaleAndNoAcne) {
 double hit_from_plus_x(const std::string& object) {
     const Scene scene = build_scene(parse_scene_text("objects:\n  - " + object + "\n", "test.yaml", "."));
     Hit hit;
-    EXPECT_TRUE(scene.intersect({{10, 0, 0}, {-1, 0, 0}}, kInf, hit)) << object;
+    EXPECT_TRUE(scene.world->intersect({{10, 0, 0}, {-1, 0, 0}}, kInf, hit)) << object;
     return hit.t;
 }
 

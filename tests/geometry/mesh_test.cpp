@@ -8,6 +8,7 @@
 #include "glint/geometry/mesh.hpp"
 #include "glint/scene/scene.hpp"
 #include "glint/scene/scene_desc.hpp"
+#include "glint/scene/scene_set.hpp"
 
 namespace glint {
 namespace {
@@ -30,17 +31,17 @@ TEST(MeshShape, FileIsFoundRelativeToTheSceneAndRenders) {
     const auto dir = scene_dir();
     std::ofstream(dir / "models" / "tri.obj") << "v -1 -1 0\nv 1 -1 0\nv 0 1 0\nf 1 2 3\n";
     for (const std::string accel : {"bvh", "list"}) {
-        RenderOverrides overrides;
+        RenderFlags overrides;
         overrides.accelerator = accel;
         const Scene scene =
             build_scene(parse_scene_text(scene_with_mesh("models/tri.obj"), "s.yaml", dir), overrides);
-        ASSERT_EQ(scene.shapes.size(), 1u);
-        ASSERT_NE(dynamic_cast<const Mesh*>(scene.shapes[0].get()), nullptr);
+        ASSERT_EQ(scene.world->shapes.size(), 1u);
+        ASSERT_NE(dynamic_cast<const Mesh*>(scene.world->shapes[0].get()), nullptr);
         Hit hit;
-        ASSERT_TRUE(scene.intersect({{0, 0, 5}, {0, 0, -1}}, kInf, hit));
+        ASSERT_TRUE(scene.world->intersect({{0, 0, 5}, {0, 0, -1}}, kInf, hit));
         EXPECT_DOUBLE_EQ(hit.t, 5);
         EXPECT_NEAR(hit.normal.z, 1, 1e-15);  // counter-clockwise seen from +z
-        EXPECT_FALSE(scene.intersect({{0.9, 0.9, 5}, {0, 0, -1}}, kInf, hit));
+        EXPECT_FALSE(scene.world->intersect({{0.9, 0.9, 5}, {0, 0, -1}}, kInf, hit));
     }
 }
 

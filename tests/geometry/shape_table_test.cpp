@@ -35,7 +35,7 @@ TEST(ShapeTable, TheShapesExampleBuildsAndUsesEveryShape) {
             << entry.name << " is not in shapes.yaml";
     }
     EXPECT_NE(text.find("transform:"), std::string::npos);
-    EXPECT_GE(scene.shapes.size(), shape_table().size());
+    EXPECT_GE(scene.world->shapes.size(), shape_table().size());
 }
 
 TEST(ShapeTable, TheTransformExampleInTheDocsBuilds) {

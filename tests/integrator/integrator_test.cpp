@@ -10,6 +10,7 @@
 #include "glint/image/image_io.hpp"
 #include "glint/integrator/direct_lighting.hpp"
 #include "glint/light/area.hpp"
+#include "glint/scene/scene_set.hpp"
 #include "integrator/radiance_util.hpp"
 #include "integrator/test_materials.hpp"
 
@@ -22,12 +23,10 @@ using test::scene_from_yaml;
 
 // Gives shape `index` the material `material`; when it emits, it becomes an area light.
 void set_material(Scene& scene, size_t index, std::unique_ptr<Material> material) {
-    scene.materials.push_back(std::move(material));
-    scene.shape_materials[index] = static_cast<std::uint32_t>(scene.materials.size() - 1);
-    if (emits_light(*scene.materials.back())) {
-        scene.shape_lights[index] = static_cast<std::int32_t>(scene.lights.size());
-        scene.lights.push_back(std::make_unique<AreaLight>(*scene.shapes[index], *scene.materials.back(), 1));
-    }
+    // A freshly built world that nothing else shares: the test may change it.
+    World& world = const_cast<World&>(*scene.world);
+    world.materials.push_back(std::move(material));
+    ASSERT_TRUE(attach_material(world, index, static_cast<std::uint32_t>(world.materials.size() - 1)));
 }
 
 // |mean − expected| within four standard errors (plus rounding).
@@ -230,9 +229,9 @@ double visible_fraction(const Scene& scene, double x, int n) {
         const std::uint64_t h = hash_values(17, static_cast<std::uint64_t>(i));
         const Point2 u{(i + static_cast<double>(h >> 11) * 0x1p-53) / n,
                        static_cast<double>(hash_values(h) >> 11) * 0x1p-53};
-        const auto s = scene.lights[0]->sample(at, u);
+        const auto s = scene.world->lights[0]->sample(at, u);
         EXPECT_TRUE(s);
-        visible += s && !shadowed(scene, at, *s, rays) ? 1 : 0;
+        visible += s && !shadowed(*scene.world, at, *s, rays) ? 1 : 0;
     }
     return static_cast<double>(visible) / n;
 }
@@ -279,7 +278,7 @@ lights:
 )";
 
 TEST(IntegratorsAgree, RaycastAndDirectOnlyPathTracingOnMatteScenes) {
-    RenderOverrides overrides;
+    RenderFlags overrides;
     overrides.width = 24;
     overrides.height = 16;
     overrides.samples_per_pixel = 64;
@@ -303,7 +302,7 @@ objects:
   - {type: plane, point: [0, 0, -2], normal: [0, -0.2, 1]}
 lights: [{type: point, position: [-1, 4, 3], intensity: 20}]
 )";
-    RenderOverrides overrides;
+    RenderFlags overrides;
     overrides.integrator = "whitted";
     Scene whitted = scene_from_yaml(yaml, overrides);
     set_material(whitted, 1, std::make_unique<test::PerfectMirror>());
@@ -346,7 +345,7 @@ objects:
 lights: [{type: point, position: [-2, 5, 1], intensity: 30}]
 )";
     const auto make = [&](const char* integrator, std::uint64_t seed) {
-        RenderOverrides overrides;
+        RenderFlags overrides;
         overrides.integrator = integrator;
         overrides.seed = seed;
         Scene scene = scene_from_yaml(yaml, overrides);

@@ -10,15 +10,16 @@
 #include "glint/render/render.hpp"
 #include "glint/scene/scene.hpp"
 #include "glint/scene/scene_desc.hpp"
+#include "glint/scene/scene_set.hpp"
 
 namespace glint::test {
 
-inline Scene scene_from_yaml(const std::string& yaml, const RenderOverrides& overrides = {}) {
+inline Scene scene_from_yaml(const std::string& yaml, const RenderFlags& overrides = {}) {
     return build_scene(parse_scene_text(yaml, "test.yaml", "."), overrides);
 }
 
 inline Film render_film(const Scene& scene) {
-    Film film(scene.settings.width, scene.settings.height);
+    Film film(scene.view.settings.width, scene.view.settings.height);
     const RenderStats stats = render(scene, film);
     EXPECT_EQ(stats.nonfinite_samples, 0u);
     return film;

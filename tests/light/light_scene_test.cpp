@@ -27,9 +27,9 @@ camera: {eye: [0, 0, 5], look_at: [0, 0, 0], fov: 10}
 objects: [{type: plane, point: [0, 0, -3], normal: [0, 0, 1]}]
 lights: [{type: area, radiance: [1, 2, 3], shape: {type: disk, center: [0, 0, 0], normal: [0, 0, 1], radius: 2}}]
 )");
-    ASSERT_EQ(scene.shapes.size(), 2u);
-    EXPECT_EQ(scene.shape_lights[0], -1);
-    EXPECT_EQ(scene.shape_lights[1], 0);
+    ASSERT_EQ(scene.world->shapes.size(), 2u);
+    EXPECT_EQ(scene.world->shape_lights[0], -1);
+    EXPECT_EQ(scene.world->shape_lights[1], 0);
     const Film film = test::render_film(scene);
     EXPECT_EQ(film.pixel(1, 2), Rgb(1, 2, 3));  // the front face, head-on
 }
@@ -46,9 +46,9 @@ objects:
   - {type: plane, normal: [0, 1, 0], material: {type: matte, albedo: 0.5}}
   - {type: sphere, center: [0, 2, 0], radius: 0.5, material: {type: emissive, radiance: 4}}
 )");
-        ASSERT_EQ(scene.lights.size(), 1u);
-        EXPECT_EQ(scene.shape_lights[1], 0);
-        EXPECT_NE(dynamic_cast<const AreaLight*>(scene.lights[0].get()), nullptr);
+        ASSERT_EQ(scene.world->lights.size(), 1u);
+        EXPECT_EQ(scene.world->shape_lights[1], 0);
+        EXPECT_NE(dynamic_cast<const AreaLight*>(scene.world->lights[0].get()), nullptr);
         const test::RegionMean m = test::region_mean(test::render_film(scene), 0, 0, 8, 8);
         EXPECT_NEAR(m.mean, 0.5 * 4 * (0.25 / 4), 4 * m.standard_error + 1e-3) << integrator;
     }
@@ -68,7 +68,7 @@ TEST(LightScene, TheEnvironmentIsTheBackground) {
 render: {width: 2, height: 2, samples: 1}
 lights: [{type: environment, radiance: [0.1, 0.2, 0.3], scale: 2}]
 )");
-    ASSERT_NE(scene.environment, nullptr);
+    ASSERT_NE(scene.world->environment, nullptr);
     const Rgb sky = test::render_film(scene).pixel(1, 1);
     EXPECT_NEAR(sky.b, 0.6, 1e-15);
 }

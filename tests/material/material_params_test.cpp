@@ -36,20 +36,20 @@ materials:
   g: {type: dielectric, ior: 2.417, absorption: [0.1, 0.2, 0.3]}
   h: {type: emissive, radiance: [1, 0.9, 0.8], scale: 4, two_sided: true}
 )");
-    ASSERT_EQ(scene.materials.size(), 8u);
+    ASSERT_EQ(scene.world->materials.size(), 8u);
     const Hit hit = testing::test_hit();
-    EXPECT_EQ(scene.materials[6]->absorption(), Rgb(0.1, 0.2, 0.3));
-    EXPECT_EQ(scene.materials[7]->emitted(hit, -hit.normal), Rgb(4, 3.6, 3.2));  // two-sided
+    EXPECT_EQ(scene.world->materials[6]->absorption(), Rgb(0.1, 0.2, 0.3));
+    EXPECT_EQ(scene.world->materials[7]->emitted(hit, -hit.normal), Rgb(4, 3.6, 3.2));  // two-sided
     // The checker albedo reaches the matte surface: ambient reflectance is the texture's value.
-    const Rgb albedo = scene.materials[0]->ambient_reflectance(hit);
+    const Rgb albedo = scene.world->materials[0]->ambient_reflectance(hit);
     EXPECT_TRUE(albedo == Rgb(0.9) || albedo == Rgb(0.1, 0.2, 0.3));
 }
 
 TEST(MaterialParams, EmissiveIsOneSidedByDefault) {
     const Scene scene = build("materials: {lamp: {type: emissive, radiance: 2}}\n");
     const Hit hit = testing::test_hit();
-    EXPECT_EQ(scene.materials[0]->emitted(hit, hit.normal), Rgb(2.0));
-    EXPECT_EQ(scene.materials[0]->emitted(hit, -hit.normal), Rgb());
+    EXPECT_EQ(scene.world->materials[0]->emitted(hit, hit.normal), Rgb(2.0));
+    EXPECT_EQ(scene.world->materials[0]->emitted(hit, -hit.normal), Rgb());
 }
 
 TEST(MaterialParams, BadValuesAreErrorsAtTheirLine) {

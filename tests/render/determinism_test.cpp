@@ -27,14 +27,14 @@ TEST(Determinism, PfmIsBitIdenticalWithOneAndTwoThreads) {
 }
 
 TEST(Determinism, TileSizeDoesNotChangeTheImage) {
-    RenderOverrides overrides;
+    RenderFlags overrides;
     overrides.width = 50;
     overrides.height = 30;
     overrides.samples_per_pixel = 5;
     Scene a = build_scene(default_scene(), overrides);
-    a.settings.tile_size = 16;
+    a.view.settings.tile_size = 16;
     Scene b = build_scene(default_scene(), overrides);
-    b.settings.tile_size = 7;
+    b.view.settings.tile_size = 7;
     const Film fa = test::render_film(a);
     const Film fb = test::render_film(b);
     for (int y = 0; y < 30; ++y) {
@@ -45,7 +45,7 @@ TEST(Determinism, TileSizeDoesNotChangeTheImage) {
 }
 
 TEST(Determinism, TheSeedChangesTheNoiseButNotTheMean) {
-    RenderOverrides overrides;
+    RenderFlags overrides;
     overrides.width = 40;
     overrides.height = 24;
     overrides.samples_per_pixel = 4;

@@ -1,7 +1,10 @@
 // Progressive rendering: passes in order add up to exactly what render() produces.
 #include "glint/render/progressive.hpp"
+#include "glint/scene/scene_set.hpp"
 
 #include <gtest/gtest.h>
+
+#include <limits>
 
 #include "glint/render/render.hpp"
 #include "glint/scene/scene.hpp"
@@ -11,7 +14,7 @@ namespace glint {
 namespace {
 
 Scene small_default_scene(std::uint32_t spp) {
-    RenderOverrides o;
+    RenderFlags o;
     o.width = 40;
     o.height = 23;  // not a multiple of the tile size
     o.samples_per_pixel = spp;
@@ -23,7 +26,7 @@ TEST(ProgressiveRender, AllPassesGiveTheBitsOfRender) {
     Film expected(40, 23);
     const RenderStats stats = render(scene, expected);
 
-    ProgressiveRender progressive(scene);
+    ProgressiveRender progressive(*scene.world, scene.view);
     EXPECT_EQ(progressive.target_samples(), 25u);
     std::vector<std::uint32_t> done_after_pass;
     while (!progressive.complete()) {
@@ -32,13 +35,13 @@ TEST(ProgressiveRender, AllPassesGiveTheBitsOfRender) {
     }
     EXPECT_EQ(done_after_pass, (std::vector<std::uint32_t>{1, 3, 7, 15, 25}));
     EXPECT_EQ(progressive.film().to_image().rgb, expected.to_image().rgb);
-    EXPECT_EQ(progressive.rays().total(), stats.rays.total());
+    EXPECT_EQ(progressive.stats().rays.total(), stats.rays.total());
     EXPECT_EQ(progressive.film().sample_count(39, 22), 25u);
 }
 
 TEST(ProgressiveRender, CancelledPassIsNotCounted) {
     const Scene scene = small_default_scene(4);
-    ProgressiveRender progressive(scene);
+    ProgressiveRender progressive(*scene.world, scene.view);
     EXPECT_FALSE(progressive.next_pass([] { return true; }));
     EXPECT_EQ(progressive.samples_done(), 0u);
     EXPECT_FALSE(progressive.complete());
@@ -46,16 +49,14 @@ TEST(ProgressiveRender, CancelledPassIsNotCounted) {
 
 TEST(ProgressiveRender, CoarsePreviewRepeatsOneSamplePerBlock) {
     const Scene scene = small_default_scene(1);
-    ProgressiveRender progressive(scene);
+    ProgressiveRender progressive(*scene.world, scene.view);
     Image preview;
     ASSERT_TRUE(progressive.coarse_preview(8, preview));
     ASSERT_EQ(preview.width, 40);
     ASSERT_EQ(preview.height, 23);
     // The block's value is the radiance of sample 0 at the block's centre pixel.
     RayCounters rays;
-    const auto sampler = make_sampler(scene.settings.sampler, 1);
-    const auto integrator = make_integrator(scene.settings.integrator, scene.settings);
-    const Rgb centre = render_sample(scene, *sampler, *integrator, 12, 12, 0, rays);  // block (8..16)²
+    const Rgb centre = render_sample(*scene.world, scene.view, 12, 12, 0, rays);  // block (8..16)²
     for (int y = 8; y < 16; ++y) {
         for (int x = 8; x < 16; ++x) {
             EXPECT_EQ(preview.pixel(x, y)[0], static_cast<float>(centre.r));
@@ -63,10 +64,58 @@ TEST(ProgressiveRender, CoarsePreviewRepeatsOneSamplePerBlock) {
         }
     }
     // The last, partial block row (y 16..22) takes its own centre.
-    const Rgb corner = render_sample(scene, *sampler, *integrator, 36, 19, 0, rays);
+    const Rgb corner = render_sample(*scene.world, scene.view, 36, 19, 0, rays);
     EXPECT_EQ(preview.pixel(39, 22)[1], static_cast<float>(corner.g));
     EXPECT_EQ(progressive.samples_done(), 0u);  // the film is untouched
     EXPECT_EQ(progressive.film().sample_count(0, 0), 0u);
+}
+
+// An integrator that returns NaN for one pixel and ∞ for another, 1 elsewhere.
+class PoisonedIntegrator final : public Integrator {
+  public:
+    Rgb radiance(const World&, const Ray& ray, SampleStream&, RayCounters&) const override {
+        if (ray.direction.x < -0.3 && ray.direction.y > 0.1) {
+            return Rgb(std::numeric_limits<double>::quiet_NaN());
+        }
+        if (ray.direction.x > 0.3 && ray.direction.y < -0.1) {
+            return Rgb(std::numeric_limits<double>::infinity());
+        }
+        return Rgb(1.0);
+    }
+};
+
+// render() and the preview run the same loop: non-finite samples are left out of the film, counted, and
+// the first named by pixel and sample, the same in both.
+TEST(ProgressiveRender, NonFiniteSamplesAreCountedAndNamedNotZeroed) {
+    Scene scene = small_default_scene(4);
+    scene.view.integrator = std::make_unique<PoisonedIntegrator>();
+    Film film(40, 23);
+    const RenderStats stats = render(scene, film);
+    ASSERT_GT(stats.nonfinite_samples, 0u);
+    ASSERT_GE(stats.first_nonfinite_x, 0);
+    // The named pixel lost samples, and its value is the mean of the finite ones, not darkened by zeros.
+    const int x = stats.first_nonfinite_x, y = stats.first_nonfinite_y;
+    EXPECT_LT(film.sample_count(x, y), 4u);
+    if (film.sample_count(x, y) > 0) {
+        EXPECT_EQ(film.pixel(x, y).r, 1.0);
+    }
+    std::uint64_t missing = 0;
+    for (int j = 0; j < 23; ++j) {
+        for (int i = 0; i < 40; ++i) {
+            missing += 4 - film.sample_count(i, j);
+        }
+    }
+    EXPECT_EQ(missing, stats.nonfinite_samples);
+
+    ProgressiveRender progressive(*scene.world, scene.view);
+    while (!progressive.complete()) {
+        ASSERT_TRUE(progressive.next_pass());
+    }
+    const RenderStats preview = progressive.stats();
+    EXPECT_EQ(preview.nonfinite_samples, stats.nonfinite_samples);
+    EXPECT_EQ(preview.first_nonfinite_x, stats.first_nonfinite_x);
+    EXPECT_EQ(preview.first_nonfinite_y, stats.first_nonfinite_y);
+    EXPECT_EQ(preview.first_nonfinite_sample, stats.first_nonfinite_sample);
 }
 
 }  // namespace

@@ -8,18 +8,19 @@
 #include "glint/sampling/sampler.hpp"
 #include "glint/scene/scene.hpp"
 #include "glint/scene/scene_desc.hpp"
+#include "glint/scene/scene_set.hpp"
 
 namespace glint {
 namespace {
 
 double mean_image_value(const std::string& sampler_name, std::uint32_t spp, std::uint32_t* spp_taken) {
-    RenderOverrides overrides;
+    RenderFlags overrides;
     overrides.width = 16;
     overrides.height = 12;
     overrides.samples_per_pixel = spp;
     overrides.sampler = sampler_name;
-    overrides.threads = 1;
-    const Scene scene = build_scene(default_scene(), overrides);
+    Scene scene = build_scene(default_scene(), overrides);
+    scene.view.settings.threads = 1;
     Film film(16, 12);
     const RenderStats stats = render(scene, film);
     *spp_taken = stats.samples_per_pixel;

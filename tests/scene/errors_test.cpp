@@ -4,6 +4,7 @@
 #include "glint/core/hash.hpp"
 #include "glint/scene/scene.hpp"
 #include "glint/scene/scene_desc.hpp"
+#include "glint/scene/scene_set.hpp"
 #include "test_util.hpp"
 
 namespace glint {
@@ -174,7 +175,7 @@ TEST(SceneErrors, MutatedScenesFailCleanly) {
     int errors = 0;
     const auto attempt = [&](const std::string& mutated) {
         try {
-            RenderOverrides small;
+            RenderFlags small;
             small.width = 4;
             small.height = 4;
             build_scene(parse_scene_text(mutated, "mutated.yaml", "."), small);

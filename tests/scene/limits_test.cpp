@@ -8,6 +8,7 @@
 
 #include "glint/scene/scene.hpp"
 #include "glint/scene/scene_desc.hpp"
+#include "glint/scene/scene_set.hpp"
 #include "glint/world/settings.hpp"
 #include "test_util.hpp"
 
@@ -15,7 +16,7 @@ namespace glint {
 namespace {
 
 // The error `text` gives, parsed and built as the command line does; fails the test if there is none.
-SceneError error_of(const std::string& text, const RenderOverrides& overrides = {}) {
+SceneError error_of(const std::string& text, const RenderFlags& overrides = {}) {
     try {
         build_scene(parse_scene_text(text, "bad.yaml", "."), overrides);
     } catch (const SceneError& e) {
@@ -69,7 +70,7 @@ TEST(SceneLimits, AliasesWithinTheLimitStillWork) {
     const Scene scene = test::scene_from_text(
         "materials:\n  red: &red {type: matte, albedo: [0.8, 0.1, 0.1]}\n  red2: *red\n"
         "objects:\n  - {type: sphere, radius: 1, material: red2}\n");
-    EXPECT_EQ(scene.materials.size(), 2u);
+    EXPECT_EQ(scene.world->materials.size(), 2u);
 }
 
 TEST(SceneLimits, DeepNestingIsAnError) {
@@ -145,10 +146,12 @@ TEST(SceneLimits, MaxDepthHasAnUpperBound) {
     const SceneError in_file = error_of("render:\n  integrator: whitted\n  max_depth: 1000000000\n");
     EXPECT_EQ(in_file.position().line, 3);
     EXPECT_TRUE(says(in_file, "more than " + std::to_string(kMaxPathDepth) + " bounces")) << in_file.what();
-    RenderOverrides deep;
+    RenderFlags deep;
     deep.max_depth = 30000;
     const SceneError on_command_line = error_of("objects: []\n", deep);
-    EXPECT_TRUE(says(on_command_line, "--max-depth is more than")) << on_command_line.what();
+    // The flag is a short form of --set render.max_depth=…: the error names both.
+    EXPECT_EQ(on_command_line.position().file->path, "--max-depth") << on_command_line.what();
+    EXPECT_TRUE(says(on_command_line, "render.max_depth is more than")) << on_command_line.what();
 }
 
 TEST(SceneLimits, ImageSizeAndSamplesHaveUpperBounds) {
@@ -158,31 +161,31 @@ TEST(SceneLimits, ImageSizeAndSamplesHaveUpperBounds) {
     const SceneError whole = error_of("render: {width: 32768, height: 32768}\n");
     EXPECT_TRUE(says(whole, "the film would need more than 4 GiB")) << whole.what();
     EXPECT_EQ(whole.position().line, 1);
-    RenderOverrides wide;
+    RenderFlags wide;
     wide.width = 32768;
     wide.height = 16384;
     EXPECT_TRUE(says(error_of("objects: []\n", wide), "more than 134217728 pixels"));
-    RenderOverrides zero;
+    RenderFlags zero;
     zero.width = 0;
-    EXPECT_TRUE(says(error_of("objects: []\n", zero), "--width"));
+    const SceneError zero_width = error_of("objects: []\n", zero);
+    EXPECT_EQ(zero_width.position().file->path, "--width") << zero_width.what();
+    EXPECT_TRUE(says(zero_width, "render.width")) << zero_width.what();
 }
 
 // Whitted's recursion runs as a loop: the deepest allowed value between two facing mirrors (every
 // branch goes the whole depth) finishes on a thread with a 256 KiB stack, where the old recursion
 // (hundreds of bytes a level, over 1024 levels) overflowed.
 TEST(SceneLimits, WhittedAtTheDeepestAllowedDepthNeedsLittleStack) {
-    RenderOverrides one_thread;  // render() then runs on the calling thread: the small one below
-    one_thread.threads = 1;
-    const Scene scene =
+    Scene scene =
         test::scene_from_text("render: {width: 4, height: 4, samples: 1, integrator: whitted, max_depth: " +
-                                  std::to_string(kMaxPathDepth) + "}\n" +
-                                  "camera: {eye: [0, 0, 0], look_at: [0, 0, -1], fov: 10}\n"
-                                  "materials: {m: {type: mirror}}\n"
-                                  "objects:\n"
-                                  "  - {type: plane, point: [0, 0, -1], normal: [0, 0, 1], material: m}\n"
-                                  "  - {type: plane, point: [0, 0, 1], normal: [0, 0, -1], material: m}\n"
-                                  "lights: [{type: point, position: [0, 0, 0], intensity: 1}]\n",
-                              one_thread);
+                              std::to_string(kMaxPathDepth) + "}\n" +
+                              "camera: {eye: [0, 0, 0], look_at: [0, 0, -1], fov: 10}\n"
+                              "materials: {m: {type: mirror}}\n"
+                              "objects:\n"
+                              "  - {type: plane, point: [0, 0, -1], normal: [0, 0, 1], material: m}\n"
+                              "  - {type: plane, point: [0, 0, 1], normal: [0, 0, -1], material: m}\n"
+                              "lights: [{type: point, position: [0, 0, 0], intensity: 1}]\n");
+    scene.view.settings.threads = 1;  // render() then runs on the calling thread: the small one below
     struct Job {
         const Scene* scene;
         RenderStats stats;

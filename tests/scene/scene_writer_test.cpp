@@ -1,5 +1,6 @@
 // The YAML writer: parse → write → parse gives the same tree, and the same rendered bits.
 #include "glint/scene/scene_writer.hpp"
+#include "glint/scene/scene_set.hpp"
 
 #include <gtest/gtest.h>
 
@@ -101,7 +102,7 @@ TEST(SceneWriter, SameTreeNoticesAChange) {
 TEST(SceneWriter, WrittenSceneRendersTheSameBits) {
     const SceneDesc desc = default_scene();
     const SceneDesc again = parse_scene_text(write_scene_yaml(desc.root), "<written>", ".");
-    RenderOverrides small;
+    RenderFlags small;
     small.width = 48;
     small.height = 27;
     small.samples_per_pixel = 4;

@@ -284,7 +284,7 @@ TEST_F(PreviewServerTest, FramesRefineAndAnEditRestartsTheAccumulation) {
     // Nothing of the first picture is left: the image is, bit for bit, a fresh render of the exported
     // scene (which also shows that export renders what is on screen).
     const Scene scene = build_scene(exported);
-    Film film(scene.settings.width, scene.settings.height);
+    Film film(scene.view.settings.width, scene.view.settings.height);
     render(scene, film);
     const std::vector<unsigned char> expected = encode_png(film.to_image());
     EXPECT_TRUE(image->body == std::string(expected.begin(), expected.end()));

@@ -23,6 +23,7 @@
 #include "glint/serve/preview_server.hpp"
 #include "glint/serve/preview_session.hpp"
 #include "glint/serve/scene_edit.hpp"
+#include "serve/open_watch.hpp"
 #include "test_util.hpp"
 
 namespace glint {
@@ -236,21 +237,8 @@ objects:
     RunningServer server(load_scene_file(dir / "scene.yaml"));
 
     // Watch the folder for any file being opened from now on.
-    const int watcher = ::inotify_init1(IN_NONBLOCK);
-    ASSERT_GE(watcher, 0);
-    ASSERT_GE(::inotify_add_watch(watcher, dir.path().c_str(), IN_OPEN | IN_ACCESS), 0);
-    const auto opened = [&] {
-        std::vector<std::string> names;
-        alignas(inotify_event) char buffer[8192];
-        for (ssize_t n; (n = ::read(watcher, buffer, sizeof(buffer))) > 0;) {
-            for (ssize_t at = 0; at < n;) {
-                const auto* event = reinterpret_cast<const inotify_event*>(buffer + at);
-                names.emplace_back(event->len ? event->name : "");
-                at += static_cast<ssize_t>(sizeof(inotify_event) + event->len);
-            }
-        }
-        return names;
-    };
+    test::OpenWatch watch(dir.path(), IN_OPEN | IN_ACCESS);
+    const auto opened = [&] { return watch.opened(); };
 
     const auto new_texture = [&](const std::string& file) {
         return server.post_edit(R"({"edits": [{"path": ["materials", "red", "albedo"], "value": null},
@@ -271,15 +259,22 @@ objects:
     EXPECT_EQ(opened(), std::vector<std::string>{});
     EXPECT_EQ(server.scene()["generation"], 1);
 
-    // The watch does see opens: an accepted edit rebuilds the scene, which reads the scene's texture.
+    // A camera edit keeps the built world: no file is read.
     auto res = server.post_edit(R"({"path": ["camera", "fov"], "value": 30})");
+    ASSERT_TRUE(res);
+    EXPECT_EQ(res->status, 200) << res->body;
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    EXPECT_EQ(opened(), std::vector<std::string>{});
+
+    // The watch does see opens: an accepted edit of the world rebuilds its materials, which read the
+    // scene's texture.
+    res = server.post_edit(R"({"path": ["background"], "value": [0.1, 0.1, 0.1]})");
     ASSERT_TRUE(res);
     EXPECT_EQ(res->status, 200) << res->body;
     std::this_thread::sleep_for(std::chrono::milliseconds(50));
     const std::vector<std::string> after = opened();
     EXPECT_NE(std::find(after.begin(), after.end(), "tex.png"), after.end());
     EXPECT_EQ(std::find(after.begin(), after.end(), "secret"), after.end());
-    ::close(watcher);
 }
 
 // --- 3. Slow and greedy clients -----------------------------------------------------------------------

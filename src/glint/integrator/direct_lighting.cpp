@@ -1,6 +1,6 @@
 #include "glint/integrator/direct_lighting.hpp"
 
-#include "glint/scene/scene.hpp"
+#include "glint/world/world.hpp"
 
 namespace glint {
 
@@ -10,18 +10,18 @@ Hit facing(const Hit& hit, const Vec3& wo) {
     return h;
 }
 
-bool shadowed(const Scene& scene, const Hit& hit, const LightSample& ls, RayCounters& rays) {
+bool shadowed(const World& world, const Hit& hit, const LightSample& ls, RayCounters& rays) {
     ++rays.shadow;
-    return ls.infinite ? scene.occluded(spawn_ray(hit, ls.wi), kInf)
-                       : scene.occluded(spawn_ray_to(hit, ls.position), kShadowRayEnd);
+    return ls.infinite ? world.occluded(spawn_ray(hit, ls.wi), kInf)
+                       : world.occluded(spawn_ray_to(hit, ls.position), kShadowRayEnd);
 }
 
-Rgb direct_lighting(const Scene& scene, const Hit& hit, const Material& material, const Vec3& wo,
+Rgb direct_lighting(const World& world, const Hit& hit, const Material& material, const Vec3& wo,
                     SampleStream& samples, RayCounters& rays) {
-    Rgb radiance = material.ambient_reflectance(hit) * scene.ambient;
+    Rgb radiance = material.ambient_reflectance(hit) * world.ambient;
     const Hit at = facing(hit, wo);
     const Vec3& n = at.shading_normal;
-    for (const auto& light : scene.lights) {
+    for (const auto& light : world.lights) {
         const int count = light->samples();
         Rgb sum;
         for (int i = 0; i < count; ++i) {
@@ -32,7 +32,7 @@ Rgb direct_lighting(const Scene& scene, const Hit& hit, const Material& material
             }
             if (ls->ambient) {  // an ambient-occlusion probe: the ambient term, if unblocked
                 const Rgb reflected = material.ambient_reflectance(hit) * ls->radiance;
-                if (!reflected.is_black() && !shadowed(scene, at, *ls, rays)) {
+                if (!reflected.is_black() && !shadowed(world, at, *ls, rays)) {
                     sum += reflected;
                 }
                 continue;
@@ -45,7 +45,7 @@ Rgb direct_lighting(const Scene& scene, const Hit& hit, const Material& material
             if (f.is_black()) {
                 continue;
             }
-            if (!shadowed(scene, at, *ls, rays)) {
+            if (!shadowed(world, at, *ls, rays)) {
                 sum += f * ls->radiance * (cos_theta / ls->pdf);
             }
         }

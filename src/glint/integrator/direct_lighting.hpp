@@ -17,13 +17,13 @@ inline constexpr double kShadowRayEnd = 1.0 - 1e-9;
 Hit facing(const Hit& hit, const Vec3& wo);
 
 // Whether something blocks the shadow ray from `hit` to the light sample (counted in `rays`).
-bool shadowed(const Scene& scene, const Hit& hit, const LightSample& ls, RayCounters& rays);
+bool shadowed(const World& world, const Hit& hit, const LightSample& ls, RayCounters& rays);
 
 // Light reflected towards wo at `hit` straight from the scene's lights: the ambient term plus, for
 // each light, the mean of light.samples() samples of f · L · cos θ / pdf, each with a shadow ray
 // (paper §VI–VII); ambient-occlusion probes add the ambient term where unblocked. Shared by the
 // integrators that shade with direct light.
-Rgb direct_lighting(const Scene& scene, const Hit& hit, const Material& material, const Vec3& wo,
+Rgb direct_lighting(const World& world, const Hit& hit, const Material& material, const Vec3& wo,
                     SampleStream& samples, RayCounters& rays);
 
 }  // namespace glint

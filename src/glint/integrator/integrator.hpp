@@ -13,8 +13,9 @@
 
 namespace glint {
 
-struct Scene;
+struct World;
 struct RenderSettings;
+class Params;
 
 // Rays traced, by kind; each tile keeps its own and the renderer adds them up.
 struct RayCounters {
@@ -34,11 +35,13 @@ class Integrator {
   public:
     virtual ~Integrator() = default;
     // Radiance arriving at the camera along `ray`. `samples` supplies this path's random numbers.
-    virtual Rgb radiance(const Scene& scene, const Ray& ray, SampleStream& samples,
+    virtual Rgb radiance(const World& world, const Ray& ray, SampleStream& samples,
                          RayCounters& rays) const = 0;
 };
 
-using IntegratorFactory = std::function<std::unique_ptr<Integrator>(const RenderSettings&)>;
+// An integrator reads its own parameters (`render: {integrator: {type: path, max_depth: 8}}`); the
+// render settings give the defaults (`render.max_depth`, the short form's companion).
+using IntegratorFactory = std::function<std::unique_ptr<Integrator>(Params&, const RenderSettings&)>;
 struct IntegratorEntry {
     std::string name;
     std::string summary;
@@ -46,7 +49,6 @@ struct IntegratorEntry {
 };
 // The name → constructor table of integrators ("raycast", …).
 const std::vector<IntegratorEntry>& integrator_table();
-std::unique_ptr<Integrator> make_integrator(const std::string& name, const RenderSettings& settings);
 std::vector<std::string> integrator_names();
 
 }  // namespace glint

@@ -2,29 +2,38 @@
 #include "glint/integrator/path.hpp"
 #include "glint/integrator/raycast.hpp"
 #include "glint/integrator/whitted.hpp"
+#include "glint/params/params.hpp"
 #include "glint/world/settings.hpp"
 
 namespace glint {
 
+namespace {
+
+// The integrator's own `max_depth`, or the render block's. Within 1 … kMaxPathDepth (settings.hpp).
+int max_depth(Params& p, const RenderSettings& settings) {
+    const std::int64_t depth = p.positive_integer("max_depth", settings.max_depth);
+    if (depth > kMaxPathDepth) {
+        p.fail("max_depth", max_depth_limit_message(p.what() + ".max_depth"));
+    }
+    return static_cast<int>(depth);
+}
+
+}  // namespace
+
 const std::vector<IntegratorEntry>& integrator_table() {
     static const std::vector<IntegratorEntry> table = {
         {"raycast", "direct light from every light with hard shadows; no reflection",
-         [](const RenderSettings&) { return std::make_unique<RaycastIntegrator>(); }},
+         [](Params&, const RenderSettings&) { return std::make_unique<RaycastIntegrator>(); }},
         {"whitted", "Whitted: direct light and shadows plus recursive mirror reflection and refraction",
-         [](const RenderSettings& s) { return std::make_unique<WhittedIntegrator>(s.max_depth); }},
+         [](Params& p, const RenderSettings& s) {
+             return std::make_unique<WhittedIntegrator>(max_depth(p, s));
+         }},
         {"path", "path tracing with next-event estimation and multiple importance sampling",
-         [](const RenderSettings& s) { return std::make_unique<PathIntegrator>(s.max_depth); }},
+         [](Params& p, const RenderSettings& s) {
+             return std::make_unique<PathIntegrator>(max_depth(p, s));
+         }},
     };
     return table;
-}
-
-std::unique_ptr<Integrator> make_integrator(const std::string& name, const RenderSettings& settings) {
-    for (const IntegratorEntry& entry : integrator_table()) {
-        if (entry.name == name) {
-            return entry.create(settings);
-        }
-    }
-    return nullptr;
 }
 
 std::vector<std::string> integrator_names() {

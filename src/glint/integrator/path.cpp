@@ -2,7 +2,7 @@
 
 #include "glint/integrator/direct_lighting.hpp"
 #include "glint/integrator/whitted.hpp"
-#include "glint/scene/scene.hpp"
+#include "glint/world/world.hpp"
 
 namespace glint {
 
@@ -11,7 +11,7 @@ constexpr int kRouletteStart = 3;      // bounces before Russian roulette may en
 constexpr double kMaxSurvival = 0.95;  // never certain survival: ends paths trapped between mirrors
 }  // namespace
 
-Rgb PathIntegrator::radiance(const Scene& scene, const Ray& camera_ray, SampleStream& samples,
+Rgb PathIntegrator::radiance(const World& world, const Ray& camera_ray, SampleStream& samples,
                              RayCounters& rays) const {
     ++rays.camera;
     Rgb radiance;
@@ -23,24 +23,24 @@ Rgb PathIntegrator::radiance(const Scene& scene, const Ray& camera_ray, SampleSt
 
     for (int bounce = 0;; ++bounce) {
         Hit hit;
-        if (!scene.intersect(ray, kInf, hit)) {
+        if (!world.intersect(ray, kInf, hit)) {
             const Vec3 dir = normalize(ray.direction);
-            const Rgb sky = scene.escaped(dir);
-            if (specular || !scene.environment) {
+            const Rgb sky = world.escaped(dir);
+            if (specular || !world.environment) {
                 radiance += throughput * sky;
             } else {
                 radiance += throughput * sky *
-                            power_heuristic(bsdf_pdf, scene.environment->pdf(previous, dir, nullptr));
+                            power_heuristic(bsdf_pdf, world.environment->pdf(previous, dir, nullptr));
             }
             break;
         }
-        const Material& material = scene.material(hit);
+        const Material& material = world.material(hit);
         throughput *= segment_transmittance(material, hit, ray);
         const Vec3 wo = normalize(-ray.direction);
 
         const Rgb emitted = material.emitted(hit, wo);
         if (!emitted.is_black()) {
-            const Light* light = scene.light_of(hit);
+            const Light* light = world.light_of(hit);
             if (specular || !light) {
                 radiance += throughput * emitted;
             } else {
@@ -54,7 +54,7 @@ Rgb PathIntegrator::radiance(const Scene& scene, const Ray& camera_ray, SampleSt
 
         // Next-event estimation: one sample of each light.
         const Hit at = facing(hit, wo);
-        for (const auto& light : scene.lights) {
+        for (const auto& light : world.lights) {
             if (!light->physical()) {
                 continue;
             }
@@ -69,7 +69,7 @@ Rgb PathIntegrator::radiance(const Scene& scene, const Ray& camera_ray, SampleSt
                 continue;
             }
             const double weight = ls->delta ? 1.0 : power_heuristic(ls->pdf, material.pdf(hit, wo, ls->wi));
-            if (weight > 0 && !shadowed(scene, at, *ls, rays)) {
+            if (weight > 0 && !shadowed(world, at, *ls, rays)) {
                 radiance += throughput * f * ls->radiance * (cos_theta * weight / ls->pdf);
             }
         }

@@ -16,7 +16,7 @@ namespace glint {
 class PathIntegrator final : public Integrator {
   public:
     explicit PathIntegrator(int max_depth) : max_depth_(max_depth) {}
-    Rgb radiance(const Scene& scene, const Ray& ray, SampleStream& samples, RayCounters& rays) const override;
+    Rgb radiance(const World& world, const Ray& ray, SampleStream& samples, RayCounters& rays) const override;
 
   private:
     int max_depth_;

@@ -1,20 +1,20 @@
 #include "glint/integrator/raycast.hpp"
 
 #include "glint/integrator/direct_lighting.hpp"
-#include "glint/scene/scene.hpp"
+#include "glint/world/world.hpp"
 
 namespace glint {
 
-Rgb RaycastIntegrator::radiance(const Scene& scene, const Ray& ray, SampleStream& samples,
+Rgb RaycastIntegrator::radiance(const World& world, const Ray& ray, SampleStream& samples,
                                 RayCounters& rays) const {
     ++rays.camera;
     Hit hit;
-    if (!scene.intersect(ray, kInf, hit)) {
-        return scene.escaped(ray.direction);
+    if (!world.intersect(ray, kInf, hit)) {
+        return world.escaped(ray.direction);
     }
-    const Material& material = scene.material(hit);
+    const Material& material = world.material(hit);
     const Vec3 wo = normalize(-ray.direction);
-    return material.emitted(hit, wo) + direct_lighting(scene, hit, material, wo, samples, rays);
+    return material.emitted(hit, wo) + direct_lighting(world, hit, material, wo, samples, rays);
 }
 
 }  // namespace glint

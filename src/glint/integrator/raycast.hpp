@@ -8,7 +8,7 @@ namespace glint {
 // from shadow rays; no reflected or refracted rays. Rays that miss see the background.
 class RaycastIntegrator final : public Integrator {
   public:
-    Rgb radiance(const Scene& scene, const Ray& ray, SampleStream& samples, RayCounters& rays) const override;
+    Rgb radiance(const World& world, const Ray& ray, SampleStream& samples, RayCounters& rays) const override;
 };
 
 }  // namespace glint

@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "glint/integrator/direct_lighting.hpp"
-#include "glint/scene/scene.hpp"
+#include "glint/world/world.hpp"
 
 namespace glint {
 
@@ -21,7 +21,7 @@ Rgb segment_transmittance(const Material& material, const Hit& hit, const Ray& r
 // first branch's whole subtree, then its second), so the random numbers go to the same places. A
 // recursive version overflowed the stack of a worker thread at depths of a few thousand; this one needs
 // one pending entry per level at most. The stack is per thread and reused, so no allocation per ray.
-Rgb WhittedIntegrator::radiance(const Scene& scene, const Ray& camera_ray, SampleStream& samples,
+Rgb WhittedIntegrator::radiance(const World& world, const Ray& camera_ray, SampleStream& samples,
                                 RayCounters& rays) const {
     ++rays.camera;
     struct Branch {
@@ -39,15 +39,15 @@ Rgb WhittedIntegrator::radiance(const Scene& scene, const Ray& camera_ray, Sampl
         pending.pop_back();
         const Ray& ray = branch.ray;
         Hit hit;
-        if (!scene.intersect(ray, kInf, hit)) {
-            radiance += branch.throughput * scene.escaped(ray.direction);
+        if (!world.intersect(ray, kInf, hit)) {
+            radiance += branch.throughput * world.escaped(ray.direction);
             continue;
         }
-        const Material& material = scene.material(hit);
+        const Material& material = world.material(hit);
         const Vec3 wo = normalize(-ray.direction);
         const Rgb throughput = branch.throughput * segment_transmittance(material, hit, ray);
         radiance += throughput *
-                    (material.emitted(hit, wo) + direct_lighting(scene, hit, material, wo, samples, rays));
+                    (material.emitted(hit, wo) + direct_lighting(world, hit, material, wo, samples, rays));
         if (branch.depth >= max_depth_) {
             continue;
         }

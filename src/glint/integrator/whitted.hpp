@@ -18,7 +18,7 @@ struct Ray;
 class WhittedIntegrator final : public Integrator {
   public:
     explicit WhittedIntegrator(int max_depth) : max_depth_(max_depth) {}
-    Rgb radiance(const Scene& scene, const Ray& ray, SampleStream& samples, RayCounters& rays) const override;
+    Rgb radiance(const World& world, const Ray& ray, SampleStream& samples, RayCounters& rays) const override;
 
   private:
     static constexpr double kMinBranchWeight = 1e-4;

@@ -91,21 +91,27 @@ SceneError::SceneError(const SourcePos& pos, const std::string& message)
     : std::runtime_error(format_diagnostic(pos, message)), pos_(pos), message_(message) {}
 
 namespace {
+// Edits between two words, a swap of two neighbouring letters counting as one (the optimal string
+// alignment distance): the commonest typo, `samplse` for `samples`, is then nearer to `samples` than to
+// `sampler`.
 size_t edit_distance(const std::string& a, const std::string& b) {
-    std::vector<size_t> row(b.size() + 1);
+    std::vector<std::vector<size_t>> d(a.size() + 1, std::vector<size_t>(b.size() + 1));
+    for (size_t i = 0; i <= a.size(); ++i) {
+        d[i][0] = i;
+    }
     for (size_t j = 0; j <= b.size(); ++j) {
-        row[j] = j;
+        d[0][j] = j;
     }
     for (size_t i = 1; i <= a.size(); ++i) {
-        size_t diagonal = row[0];
-        row[0] = i;
         for (size_t j = 1; j <= b.size(); ++j) {
-            const size_t substitution = diagonal + (a[i - 1] == b[j - 1] ? 0 : 1);
-            diagonal = row[j];
-            row[j] = std::min({row[j] + 1, row[j - 1] + 1, substitution});
+            d[i][j] = std::min(
+                {d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1)});
+            if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1]) {
+                d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+            }
         }
     }
-    return row[b.size()];
+    return d[a.size()][b.size()];
 }
 }  // namespace
 
@@ -114,6 +120,13 @@ std::string closest_match(const std::string& word, const std::vector<std::string
     // Suggest only what is close: up to two edits, or half the word for long words (rotation → rotate).
     size_t best_distance = std::max<size_t>(2, word.size() / 2) + 1;
     for (const std::string& candidate : candidates) {
+        // Lengths that differ by the limit or more are that far apart at least; skipping them also
+        // keeps the distance table small whatever the length of the word (a hostile file's key).
+        const size_t length_difference =
+            word.size() > candidate.size() ? word.size() - candidate.size() : candidate.size() - word.size();
+        if (length_difference >= best_distance) {
+            continue;
+        }
         const size_t d = edit_distance(word, candidate);
         if (d < best_distance) {
             best_distance = d;

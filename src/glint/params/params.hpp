@@ -24,6 +24,7 @@ class Params {
 
     const std::string& what() const { return what_; }
     const SourcePos& pos() const { return map_->pos; }
+    const Node& map() const { return *map_; }
     // Whether `key` is present. Asking counts as knowing the key, for did-you-mean suggestions.
     bool has(const std::string& key) {
         asked_.insert(key);

@@ -1,86 +1,123 @@
 #include "glint/render/progressive.hpp"
 
-#include <tbb/blocked_range2d.h>
-#include <tbb/combinable.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <stdexcept>
-
-#include "glint/render/render.hpp"
-#include "glint/scene/scene.hpp"
 
 namespace glint {
 
 namespace {
 
+// Passes grow 1, 2, 4, 8, then stay at 16 samples: the first picture comes at once, and later passes
+// amortise the per-tile overhead.
 constexpr std::uint32_t kMaxPassSamples = 16;
 
-// Runs `body(x0, y0, x1, y1, rays)` over the image in tiles on all cores; false if cancelled.
+// Runs `body(index)` for every index in [0, count) on all cores; false if `cancelled` said so first.
 template <typename Body>
-bool for_each_tile(int width, int height, int tile, const ProgressiveRender::CancelCheck& cancelled,
-                   RayCounters& rays, const Body& body) {
-    tbb::combinable<RayCounters> tile_rays;
+bool parallel_tiles(std::size_t count, const ProgressiveRender::CancelCheck& cancelled, const Body& body) {
     std::atomic<bool> stop{false};
-    tbb::parallel_for(
-        tbb::blocked_range2d<int>(0, height, tile, 0, width, tile), [&](const tbb::blocked_range2d<int>& r) {
-            if (stop.load(std::memory_order_relaxed)) {
-                return;
-            }
-            if (cancelled && cancelled()) {
-                stop = true;
-                return;
-            }
-            body(r.cols().begin(), r.rows().begin(), r.cols().end(), r.rows().end(), tile_rays.local());
-        });
-    rays += tile_rays.combine([](RayCounters a, const RayCounters& b) { return a += b; });
+    tbb::parallel_for(std::size_t{0}, count, [&](std::size_t i) {
+        if (stop.load(std::memory_order_relaxed)) {
+            return;
+        }
+        if (cancelled && cancelled()) {
+            stop = true;
+            return;
+        }
+        body(i);
+    });
     return !stop.load();
 }
 
 }  // namespace
 
-ProgressiveRender::ProgressiveRender(const Scene& scene)
-    : scene_(scene),
-      sampler_(make_sampler(scene.settings.sampler, scene.settings.samples_per_pixel)),
-      integrator_(make_integrator(scene.settings.integrator, scene.settings)),
-      film_(scene.settings.width, scene.settings.height) {
-    if (!sampler_ || !integrator_) {
-        throw std::invalid_argument(
-            "progressive render: unknown sampler or integrator (the scene builder checks these)");
-    }
-    target_ = sampler_->samples_per_pixel();
+ProgressiveRender::ProgressiveRender(const World& world, const View& view)
+    : world_(world), view_(view), own_film_(view.settings.width, view.settings.height), film_(own_film_) {
+    plan();
 }
 
-bool ProgressiveRender::next_pass(const CancelCheck& cancelled) {
+ProgressiveRender::ProgressiveRender(const World& world, const View& view, Film& film)
+    : world_(world), view_(view), own_film_(0, 0), film_(film) {
+    if (film.width() != view.settings.width || film.height() != view.settings.height) {
+        throw std::invalid_argument("render: the film's size differs from the settings'");
+    }
+    plan();
+}
+
+void ProgressiveRender::plan() {
+    if (!view_.camera || !view_.sampler || !view_.integrator) {
+        throw std::invalid_argument("render: the view has no camera, sampler or integrator");
+    }
+    target_ = view_.sampler->samples_per_pixel();
+    const int size = std::max(1, view_.settings.tile_size);
+    for (int y = 0; y < film_.height(); y += size) {
+        for (int x = 0; x < film_.width(); x += size) {
+            tiles_.push_back({x, y, std::min(x + size, film_.width()), std::min(y + size, film_.height())});
+        }
+    }
+    tallies_.resize(tiles_.size());
+}
+
+std::uint32_t ProgressiveRender::next_pass_samples() const {
+    return std::min({done_ + 1, kMaxPassSamples, target_ - std::min(done_, target_)});
+}
+
+bool ProgressiveRender::next_pass(const CancelCheck& cancelled, const TileDone& tile_done) {
     if (complete()) {
         return true;
     }
     const std::uint32_t first = done_;
-    const std::uint32_t count = std::min(next_pass_size_, target_ - done_);
+    const std::uint32_t count = next_pass_samples();
     const auto start = std::chrono::steady_clock::now();
-    const bool finished = for_each_tile(
-        film_.width(), film_.height(), std::max(1, scene_.settings.tile_size), cancelled, rays_,
-        [&](int x0, int y0, int x1, int y1, RayCounters& rays) {
-            for (int y = y0; y < y1; ++y) {
-                for (int x = x0; x < x1; ++x) {
-                    for (std::uint32_t s = first; s < first + count; ++s) {
-                        const Rgb radiance = render_sample(scene_, *sampler_, *integrator_, x, y, s, rays);
-                        // Like render(): NaN and infinite samples are left out of the film.
-                        if (radiance.is_finite()) {
-                            film_.add_sample(x, y, radiance);
+    const bool finished = parallel_tiles(tiles_.size(), cancelled, [&](std::size_t t) {
+        const Tile& tile = tiles_[t];
+        TileTally& tally = tallies_[t];
+        for (int y = tile.y0; y < tile.y1; ++y) {
+            for (int x = tile.x0; x < tile.x1; ++x) {
+                for (std::uint32_t s = first; s < first + count; ++s) {
+                    const Rgb radiance = render_sample(world_, view_, x, y, s, tally.rays);
+                    if (!radiance.is_finite()) {
+                        if (tally.nonfinite++ == 0) {
+                            tally.first_x = x;
+                            tally.first_y = y;
+                            tally.first_sample = s;
                         }
+                        continue;
                     }
+                    film_.add_sample(x, y, radiance);
                 }
             }
-        });
+        }
+        if (tile_done) {
+            tile_done(static_cast<std::uint64_t>(tile.x1 - tile.x0) * (tile.y1 - tile.y0) * count);
+        }
+    });
     seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (!finished) {
         return false;
     }
     done_ += count;
-    next_pass_size_ = std::min(next_pass_size_ * 2, kMaxPassSamples);
     return true;
+}
+
+RenderStats ProgressiveRender::stats() const {
+    RenderStats stats;
+    stats.seconds = seconds_;
+    stats.samples_per_pixel = done_;
+    stats.rays = coarse_rays_;
+    for (const TileTally& tally : tallies_) {
+        stats.rays += tally.rays;
+        if (tally.nonfinite && stats.nonfinite_samples == 0) {
+            stats.first_nonfinite_x = tally.first_x;
+            stats.first_nonfinite_y = tally.first_y;
+            stats.first_nonfinite_sample = tally.first_sample;
+        }
+        stats.nonfinite_samples += tally.nonfinite;
+    }
+    return stats;
 }
 
 bool ProgressiveRender::coarse_preview(int block, Image& out, const CancelCheck& cancelled) {
@@ -90,31 +127,30 @@ bool ProgressiveRender::coarse_preview(int block, Image& out, const CancelCheck&
     out = Image(width, height);
     const int blocks_x = (width + block - 1) / block;
     const int blocks_y = (height + block - 1) / block;
-    const int grain = std::max(1, scene_.settings.tile_size / block);
+    std::vector<RayCounters> row_rays(static_cast<std::size_t>(blocks_y));
     const auto start = std::chrono::steady_clock::now();
-    // The "tiles" here are ranges of block indices, so that no block is shared by two tasks.
-    const bool finished = for_each_tile(
-        blocks_x, blocks_y, grain, cancelled, rays_, [&](int i0, int j0, int i1, int j1, RayCounters& rays) {
-            for (int j = j0; j < j1; ++j) {
-                for (int i = i0; i < i1; ++i) {
-                    const int x0 = i * block, y0 = j * block;
-                    const int x1 = std::min(x0 + block, width), y1 = std::min(y0 + block, height);
-                    Rgb c =
-                        render_sample(scene_, *sampler_, *integrator_, (x0 + x1) / 2, (y0 + y1) / 2, 0, rays);
-                    if (!c.is_finite()) {
-                        c = Rgb(0.0);
-                    }
-                    for (int y = y0; y < y1; ++y) {
-                        for (int x = x0; x < x1; ++x) {
-                            float* p = out.pixel(x, y);
-                            p[0] = static_cast<float>(c.r);
-                            p[1] = static_cast<float>(c.g);
-                            p[2] = static_cast<float>(c.b);
-                        }
-                    }
+    // A task per row of blocks, so that no block is shared by two tasks.
+    const bool finished = parallel_tiles(static_cast<std::size_t>(blocks_y), cancelled, [&](std::size_t j) {
+        for (int i = 0; i < blocks_x; ++i) {
+            const int x0 = i * block, y0 = static_cast<int>(j) * block;
+            const int x1 = std::min(x0 + block, width), y1 = std::min(y0 + block, height);
+            Rgb c = render_sample(world_, view_, (x0 + x1) / 2, (y0 + y1) / 2, 0, row_rays[j]);
+            if (!c.is_finite()) {
+                c = Rgb(1.0, 0.0, 1.0);
+            }
+            for (int y = y0; y < y1; ++y) {
+                for (int x = x0; x < x1; ++x) {
+                    float* p = out.pixel(x, y);
+                    p[0] = static_cast<float>(c.r);
+                    p[1] = static_cast<float>(c.g);
+                    p[2] = static_cast<float>(c.b);
                 }
             }
-        });
+        }
+    });
+    for (const RayCounters& r : row_rays) {
+        coarse_rays_ += r;
+    }
     seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return finished;
 }

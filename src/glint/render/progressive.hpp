@@ -1,57 +1,78 @@
-// Rendering a pass at a time, for previews that refine while the user watches (`glint serve`).
+// The one render loop: tiles × passes of samples. render() runs it to the end; `glint serve` runs it a
+// pass at a time, showing each, and abandons it when the scene changes.
 //
-// The passes take samples 0, 1, 2–3, 4–7, … of every pixel in order, so once all are taken the film
-// holds exactly what render() would have produced: same sums in the same order, bit for bit.
+// The passes take samples 0, 1, 2–3, 4–7, … (then 16 at a time) of every pixel in order, so the film's
+// sums are added in the same order whatever the threads, tiles or cancellations of earlier runs.
+// Non-finite samples (NaN, ∞) are left out of the film, counted and the first one named (stats()).
 #pragma once
 
 #include <cstdint>
 #include <functional>
-#include <memory>
+#include <vector>
 
 #include "glint/image/film.hpp"
 #include "glint/image/image.hpp"
-#include "glint/integrator/integrator.hpp"
-#include "glint/sampling/sampler.hpp"
+#include "glint/render/render.hpp"
 
 namespace glint {
-
-struct Scene;
 
 class ProgressiveRender {
   public:
     // Returns true when the work in progress should be abandoned (checked once per tile).
     using CancelCheck = std::function<bool()>;
+    // Called after each tile of a pass with the number of samples that tile took (from any thread).
+    using TileDone = std::function<void(std::uint64_t samples)>;
 
-    // `scene` must outlive this object. Throws std::invalid_argument on an unknown sampler or integrator.
-    explicit ProgressiveRender(const Scene& scene);
+    // `world` and `view` must outlive this object. The first form renders into a film of its own, the
+    // second into `film`, which must have the view's size.
+    ProgressiveRender(const World& world, const View& view);
+    ProgressiveRender(const World& world, const View& view, Film& film);
+    ProgressiveRender(const ProgressiveRender&) = delete;
+    ProgressiveRender& operator=(const ProgressiveRender&) = delete;
 
     // Samples per pixel once complete (the sampler's rounding of the requested count).
     std::uint32_t target_samples() const { return target_; }
     std::uint32_t samples_done() const { return done_; }
     bool complete() const { return done_ >= target_; }
+    // The samples per pixel the next pass takes (0 when complete).
+    std::uint32_t next_pass_samples() const;
 
-    // Takes the next pass: the first is one sample, each later one doubles, up to 16 samples.
-    // Returns false, leaving the film partly updated (so useless), when `cancelled` said so.
-    bool next_pass(const CancelCheck& cancelled = {});
+    // Takes the next pass. Returns false, leaving the film partly updated (so useless), when
+    // `cancelled` said so.
+    bool next_pass(const CancelCheck& cancelled = {}, const TileDone& tile_done = {});
 
     // A quick look before the first pass: one sample at the centre of each block × block square of
-    // pixels, repeated over the square. Does not touch the film; false when cancelled.
+    // pixels, repeated over the square. Does not touch the film; false when cancelled. A non-finite
+    // sample paints its block magenta, so that it is seen at once (the first pass then counts it).
     bool coarse_preview(int block, Image& out, const CancelCheck& cancelled = {});
 
     const Film& film() const { return film_; }
-    RayCounters rays() const { return rays_; }
+    // Rays, time and the non-finite samples of the passes so far; samples_per_pixel = samples_done().
+    RenderStats stats() const;
     double seconds() const { return seconds_; }  // time spent in passes so far
-    double mrays_per_second() const { return seconds_ > 0 ? rays_.total() / seconds_ * 1e-6 : 0; }
 
   private:
-    const Scene& scene_;
-    std::unique_ptr<Sampler> sampler_;
-    std::unique_ptr<Integrator> integrator_;
-    Film film_;
+    struct Tile {
+        int x0, y0, x1, y1;
+    };
+    // What each tile found, merged in tile order so that the statistics are deterministic too.
+    struct TileTally {
+        RayCounters rays;
+        std::uint64_t nonfinite = 0;
+        int first_x = -1, first_y = -1;
+        std::uint32_t first_sample = 0;
+    };
+    void plan();  // checks the view and cuts the film into tiles
+
+    const World& world_;
+    const View& view_;
+    Film own_film_;
+    Film& film_;
+    std::vector<Tile> tiles_;
+    std::vector<TileTally> tallies_;
+    RayCounters coarse_rays_;
     std::uint32_t target_ = 0;
     std::uint32_t done_ = 0;
-    std::uint32_t next_pass_size_ = 1;
-    RayCounters rays_;
     double seconds_ = 0;
 };
 

@@ -1,23 +1,25 @@
-// The parallel render loop: tiles × sample passes on all cores (architecture habit 6).
+// Rendering a whole image: the one tile × pass loop (progressive.hpp) run to the end on all cores, with
+// progress, cancellation and statistics (architecture habit 6).
 #pragma once
 
 #include <atomic>
 #include <cstdint>
 #include <functional>
-#include <optional>
 
 #include "glint/image/film.hpp"
 #include "glint/integrator/integrator.hpp"
+#include "glint/render/view.hpp"
+#include "glint/world/world.hpp"
 
 namespace glint {
-
-struct Scene;
 
 struct RenderStats {
     double seconds = 0;
     std::uint32_t samples_per_pixel = 0;  // as taken, after the sampler's rounding
     RayCounters rays;
-    std::uint64_t nonfinite_samples = 0;  // NaN or infinite radiance: counted, left out of the film
+    // NaN or infinite radiance: counted, left out of the film, and the first one (in tile order, then
+    // the order taken) named by its pixel and sample so that it can be replayed.
+    std::uint64_t nonfinite_samples = 0;
     int first_nonfinite_x = -1, first_nonfinite_y = -1;
     std::uint32_t first_nonfinite_sample = 0;
     bool cancelled = false;  // stopped by `cancel` or `stop_after_pass` before all samples were taken
@@ -35,13 +37,13 @@ struct RenderCallbacks {
     const std::atomic<bool>* stop_after_pass = nullptr;
 };
 
-// Renders scene.settings.samples_per_pixel samples into every pixel of `film` (which must have the
-// settings' size). The result is a pure function of the scene and seed: bit-identical for any thread
-// count or tile size.
-RenderStats render(const Scene& scene, Film& film, const RenderCallbacks& callbacks = {});
+// Renders view.settings.samples_per_pixel samples into every pixel of `film` (which must have the
+// settings' size). The result is a pure function of the world, the view and the seed: bit-identical for
+// any thread count or tile size.
+RenderStats render(const World& world, const View& view, Film& film, const RenderCallbacks& callbacks = {});
 
-// The radiance of one sample: what render() adds to the film for (pixel, sample index).
-Rgb render_sample(const Scene& scene, const Sampler& sampler, const Integrator& integrator, int x, int y,
-                  std::uint32_t sample, RayCounters& rays);
+// The radiance of one sample: what the render loop adds to the film for (pixel, sample index).
+Rgb render_sample(const World& world, const View& view, int x, int y, std::uint32_t sample,
+                  RayCounters& rays);
 
 }  // namespace glint

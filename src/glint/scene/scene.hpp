@@ -1,60 +1,53 @@
-// A built scene: what the renderer sees. No YAML, no names to resolve, everything checked.
+// A built scene: the world (what integrators see) and the view (how it is looked at and rendered). No
+// YAML, no names to resolve, everything checked.
 #pragma once
 
+#include <map>
 #include <memory>
-#include <optional>
 #include <string>
-#include <vector>
 
-#include "glint/accel/accelerator.hpp"
-#include "glint/camera/camera.hpp"
-#include "glint/light/light.hpp"
-#include "glint/material/material.hpp"
-#include "glint/world/settings.hpp"
+#include "glint/render/render.hpp"
+#include "glint/render/view.hpp"
+#include "glint/world/world.hpp"
 
 namespace glint {
 
-struct Scene {
-    RenderSettings settings;
-    std::unique_ptr<Camera> camera;
-    std::vector<std::unique_ptr<Shape>> shapes;
-    std::vector<std::uint32_t> shape_materials;  // material index of shapes[i]
-    std::vector<std::unique_ptr<Material>> materials;
-    std::vector<std::unique_ptr<Light>> lights;
-    std::unique_ptr<Accelerator> accelerator;
-    Rgb background;
-    Rgb ambient;  // the sum of the ambient lights' radiance
-    // The environment light, if the scene has one: rays that escape see its radiance instead of
-    // `background` (the builder forbids giving both).
-    const Light* environment = nullptr;
-    // The area light each shape is (index into `lights`), or -1: the path tracer needs a hit
-    // emitter's light for multiple importance sampling.
-    std::vector<std::int32_t> shape_lights;
-
-    bool intersect(const Ray& ray, double t_max, Hit& hit) const {
-        return accelerator->intersect(ray, t_max, hit);
-    }
-    bool occluded(const Ray& ray, double t_max) const { return accelerator->occluded(ray, t_max); }
-    const Material& material(const Hit& hit) const { return *materials[shape_materials[hit.primitive]]; }
-    // Radiance seen along a ray that leaves the scene in direction `dir`.
-    Rgb escaped(const Vec3& dir) const { return environment ? environment->escaped(dir) : background; }
-    // The light a hit surface belongs to (an emitting shape), or nullptr.
-    const Light* light_of(const Hit& hit) const {
-        const std::int32_t i = hit.primitive < shape_lights.size() ? shape_lights[hit.primitive] : -1;
-        return i < 0 ? nullptr : lights[static_cast<std::size_t>(i)].get();
-    }
-};
-
-// Settings the command line imposes over the scene file's `render:` block.
-struct RenderOverrides {
-    std::optional<int> width, height, threads, max_depth;
-    std::optional<std::uint32_t> samples_per_pixel;
-    std::optional<std::uint64_t> seed;
-    std::optional<std::string> sampler, integrator, accelerator;
-};
-
 struct SceneDesc;
+
+struct Scene {
+    std::shared_ptr<const World> world;  // shared: a view edit in `glint serve` keeps the built world
+    View view;
+};
+
+// What a later build may reuse of an earlier one: shapes (a mesh read from its file, its BVH) by the
+// text of their description, and the accelerator over exactly those shapes. `glint serve` keeps one, so a
+// material edit re-reads no mesh and rebuilds no BVH. Files are not watched: a mesh changed on disk is
+// read again only by a new cache.
+struct WorldCache {
+    std::map<std::string, std::shared_ptr<const Shape>> shapes;  // by the shape's description as text
+    struct BuiltAccelerator {
+        std::string name;
+        std::vector<const Shape*> shapes;
+        std::shared_ptr<const Accelerator> accelerator;
+    };
+    BuiltAccelerator accelerator;
+};
+
 // Validates the whole description and builds the scene. Throws SceneError at the first mistake.
-Scene build_scene(const SceneDesc& desc, const RenderOverrides& overrides = {});
+Scene build_scene(const SceneDesc& desc, WorldCache* cache = nullptr);
+
+// The two halves alone, for callers that keep one of them (the preview). Each checks its own keys;
+// build_scene also checks that the top level has no unknown key.
+View build_view(const SceneDesc& desc);
+std::shared_ptr<const World> build_world(const SceneDesc& desc, WorldCache* cache = nullptr);
+
+// True when two descriptions build the same world: they differ at most in the view's keys (`camera`, and
+// `render` but for its `accelerator`). Positions are not compared.
+bool same_world(const SceneDesc& a, const SceneDesc& b);
+
+// The scene rendered by the one render loop (render/render.hpp).
+inline RenderStats render(const Scene& scene, Film& film, const RenderCallbacks& callbacks = {}) {
+    return render(*scene.world, scene.view, film, callbacks);
+}
 
 }  // namespace glint

@@ -13,12 +13,13 @@
 #include "glint/sampling/sampler.hpp"
 #include "glint/scene/scene.hpp"
 #include "glint/scene/scene_desc.hpp"
+#include "glint/scene/scene_writer.hpp"
 
 namespace glint {
 
 namespace {
 
-// A name checked against a list, for command-line overrides and `render:` keys.
+// A name checked against a list, for the `render:` keys.
 std::string check_name(const std::string& value, const std::vector<std::string>& names,
                        const std::string& what, const SourcePos& pos) {
     for (const std::string& n : names) {
@@ -41,10 +42,6 @@ std::vector<std::string> accelerator_names() {
 constexpr double kDefaultAlbedo = 0.8;
 
 // The limits of render settings, with the reason a user needs to understand them (settings.hpp).
-std::string depth_limit_message(const std::string& what) {
-    return what + " is more than " + std::to_string(kMaxPathDepth) +
-           " bounces (paths that long carry no visible light, and every bounce costs time)";
-}
 std::string side_limit_message(const std::string& what) {
     return what + " is larger than " + std::to_string(kMaxFilmSide) + " pixels";
 }
@@ -52,128 +49,170 @@ std::string samples_limit_message(const std::string& what) {
     return what + " is more than " + std::to_string(kMaxSamplesPerPixel) + " per pixel";
 }
 
-RenderSettings read_render_settings(const Node* node, const RenderOverrides& overrides) {
+// An empty map standing for a block the scene leaves out, positioned at `pos`.
+Node empty_map_at(const SourcePos& pos) {
+    Node empty;
+    empty.kind = Node::Kind::Map;
+    empty.pos = pos;
+    return empty;
+}
+
+// `render.integrator` and `render.sampler` are objects with a type and their own keys; a plain word is
+// the short form of {type: word}.
+Node typed_object(const Node& node) {
+    if (!node.is_scalar()) {
+        return node;
+    }
+    Node object = empty_map_at(node.pos);
+    object.keys.push_back("type");
+    object.key_positions.push_back(node.pos);
+    object.items.push_back(node);
+    return object;
+}
+
+// The `render:` block's own keys. The sampler and integrator are objects of their own, read by
+// build_view; here their nodes are only marked as read.
+RenderSettings read_render_settings(Params& p) {
     RenderSettings s;
-    SourcePos where;
-    std::optional<Params> p;
-    if (node) {
-        p.emplace(*node, "render");
-        where = p->pos();
-        const auto side = [&](const std::string& key, int fallback) {
-            const std::int64_t v = p->positive_integer(key, fallback);
-            if (v > kMaxFilmSide) {
-                p->fail(key, side_limit_message("render." + key));
-            }
-            return static_cast<int>(v);
-        };
-        s.width = side("width", s.width);
-        s.height = side("height", s.height);
-        const std::int64_t spp = p->positive_integer("samples", s.samples_per_pixel);
-        if (spp > kMaxSamplesPerPixel) {
-            p->fail("samples", samples_limit_message("render.samples"));
+    const auto side = [&](const std::string& key, int fallback) {
+        const std::int64_t v = p.positive_integer(key, fallback);
+        if (v > kMaxFilmSide) {
+            p.fail(key, side_limit_message("render." + key));
         }
-        s.samples_per_pixel = static_cast<std::uint32_t>(spp);
-        if (p->has("sampler")) {
-            s.sampler = check_name(p->string("sampler"), sampler_names(), "sampler", p->pos_of("sampler"));
-        }
-        if (p->has("integrator")) {
-            s.integrator = check_name(p->string("integrator"), integrator_names(), "integrator",
-                                      p->pos_of("integrator"));
-        }
-        if (p->has("accelerator")) {
-            s.accelerator = check_name(p->string("accelerator"), accelerator_names(), "accelerator",
-                                       p->pos_of("accelerator"));
-        }
-        const std::int64_t depth = p->positive_integer("max_depth", s.max_depth);
-        if (depth > kMaxPathDepth) {
-            p->fail("max_depth", depth_limit_message("render.max_depth"));
-        }
-        s.max_depth = static_cast<int>(depth);
-        const std::int64_t seed = p->integer("seed", static_cast<std::int64_t>(s.seed));
-        if (seed < 0) {
-            p->fail("seed", "render.seed must be zero or more");
-        }
-        s.seed = static_cast<std::uint64_t>(seed);
-        p->finish();
-    }
-    // Command-line values are checked again here, so that every caller of the library (the preview,
-    // a fuzzer, a program) meets the same limits as the command line.
-    const SourcePos command_line{SourceFile::from_text("command line", ""), 0, 0};
-    const auto check = [&](bool ok, const std::string& message) {
-        if (!ok) {
-            throw SceneError(command_line, message);
-        }
+        return static_cast<int>(v);
     };
-    if (overrides.width) {
-        check(*overrides.width >= 1 && *overrides.width <= kMaxFilmSide, side_limit_message("--width"));
-        s.width = *overrides.width;
+    s.width = side("width", s.width);
+    s.height = side("height", s.height);
+    const std::int64_t spp = p.positive_integer("samples", s.samples_per_pixel);
+    if (spp > kMaxSamplesPerPixel) {
+        p.fail("samples", samples_limit_message("render.samples"));
     }
-    if (overrides.height) {
-        check(*overrides.height >= 1 && *overrides.height <= kMaxFilmSide, side_limit_message("--height"));
-        s.height = *overrides.height;
+    s.samples_per_pixel = static_cast<std::uint32_t>(spp);
+    if (p.has("accelerator")) {
+        s.accelerator =
+            check_name(p.string("accelerator"), accelerator_names(), "accelerator", p.pos_of("accelerator"));
     }
-    if (overrides.samples_per_pixel) {
-        check(*overrides.samples_per_pixel >= 1 && *overrides.samples_per_pixel <= kMaxSamplesPerPixel,
-              samples_limit_message("--spp"));
-        s.samples_per_pixel = *overrides.samples_per_pixel;
+    const std::int64_t depth = p.positive_integer("max_depth", s.max_depth);
+    if (depth > kMaxPathDepth) {
+        p.fail("max_depth", max_depth_limit_message("render.max_depth"));
     }
-    if (overrides.seed)
-        s.seed = *overrides.seed;
-    if (overrides.threads)
-        s.threads = *overrides.threads;
-    if (overrides.max_depth) {
-        check(*overrides.max_depth >= 1 && *overrides.max_depth <= kMaxPathDepth,
-              depth_limit_message("--max-depth"));
-        s.max_depth = *overrides.max_depth;
+    s.max_depth = static_cast<int>(depth);
+    const std::int64_t seed = p.integer("seed", static_cast<std::int64_t>(s.seed));
+    if (seed < 0) {
+        p.fail("seed", "render.seed must be zero or more");
     }
-    if (overrides.sampler)
-        s.sampler = check_name(*overrides.sampler, sampler_names(), "sampler", command_line);
-    if (overrides.integrator) {
-        s.integrator = check_name(*overrides.integrator, integrator_names(), "integrator", command_line);
-    }
-    if (overrides.accelerator) {
-        s.accelerator = check_name(*overrides.accelerator, accelerator_names(), "accelerator", command_line);
-    }
+    s.seed = static_cast<std::uint64_t>(seed);
     // Both sides may be within their limit and the whole still too large for memory.
     if (static_cast<std::int64_t>(s.width) * s.height > kMaxFilmPixels) {
-        const std::string message =
-            "the image is " + std::to_string(s.width) + "x" + std::to_string(s.height) + ", more than " +
-            std::to_string(kMaxFilmPixels) + " pixels (16384x8192): the film would need more than 4 GiB";
-        if (node && !overrides.width && !overrides.height) {
-            throw SceneError(where, "render: " + message);
-        }
-        throw SceneError(command_line, message);
+        p.fail("render: the image is " + std::to_string(s.width) + "x" + std::to_string(s.height) +
+               ", more than " + std::to_string(kMaxFilmPixels) +
+               " pixels (16384x8192): the film would need more than 4 GiB");
     }
     return s;
 }
 
+// The text that identifies a shape for WorldCache: its description without `material` (which the
+// shape does not depend on), with the folder its files resolve in.
+// `map` without `key` (a copy).
+Node without_key(Node map, const std::string& key) {
+    for (size_t i = 0; i < map.keys.size(); ++i) {
+        if (map.keys[i] == key) {
+            map.keys.erase(map.keys.begin() + static_cast<std::ptrdiff_t>(i));
+            map.items.erase(map.items.begin() + static_cast<std::ptrdiff_t>(i));
+            if (i < map.key_positions.size()) {
+                map.key_positions.erase(map.key_positions.begin() + static_cast<std::ptrdiff_t>(i));
+            }
+            break;
+        }
+    }
+    return map;
+}
+
+// The text that identifies a shape for WorldCache: its description without `material` (which the
+// shape does not depend on), with the folder its files resolve in.
+std::string shape_key(const Node& object, const std::filesystem::path& base_dir) {
+    return base_dir.string() + "\n" + write_scene_yaml(without_key(object, "material"));
+}
+
 }  // namespace
 
-Scene build_scene(const SceneDesc& desc, const RenderOverrides& overrides) {
+View build_view(const SceneDesc& desc) {
     Params top(desc.root, "scene");
+    const Node* render_node = top.node("render");
+    const Node render_map = render_node ? *render_node : empty_map_at(top.pos());
+    Params render(render_map, "render");
     BuildContext context{desc.base_dir, {}};
-    Scene scene;
-    scene.settings = read_render_settings(top.node("render"), overrides);
+    View view;
+    view.settings = read_render_settings(render);
+
+    // The sampler and the integrator: objects with a type, or a plain word (the short form).
+    const auto typed = [&](const std::string& key, const std::string& fallback) {
+        const Node* node = render.node(key);
+        Node object = node ? typed_object(*node) : empty_map_at(render.pos());
+        if (!node) {
+            Node type;
+            type.kind = Node::Kind::Scalar;
+            type.scalar = fallback;
+            type.pos = render.pos();
+            object.keys.push_back("type");
+            object.key_positions.push_back(render.pos());
+            object.items.push_back(type);
+        }
+        if (!object.is_map()) {
+            throw SceneError(object.pos, "render." + key + " must be a name or a map with a type, not " +
+                                             object.describe());
+        }
+        return object;
+    };
+    {
+        const Node node = typed("sampler", view.settings.sampler);
+        Params p(node, "sampler");
+        const std::string name = check_name(p.string("type"), sampler_names(), "sampler", p.pos_of("type"));
+        view.settings.sampler = name;
+        view.sampler = make_sampler(name, view.settings.samples_per_pixel);
+        p.finish();
+    }
+    {
+        const Node node = typed("integrator", view.settings.integrator);
+        Params p(node, "integrator");
+        const IntegratorEntry& entry = lookup_type(integrator_table(), p, "integrator");
+        Params own(node, entry.name + " integrator");
+        own.string("type");
+        view.settings.integrator = entry.name;
+        view.integrator = entry.create(own, view.settings);
+        own.finish();
+    }
+    render.finish();
 
     // Camera: a map with an optional type (pinhole by default).
-    {
-        const Node* camera_node = top.node("camera");
-        Node empty_map;
-        empty_map.kind = Node::Kind::Map;
-        empty_map.pos = top.pos();
-        Params p(camera_node ? *camera_node : empty_map, "camera");
-        const FilmSize film{scene.settings.width, scene.settings.height};
-        if (!p.has("type")) {
-            scene.camera = camera_table().front().create(p, context, film);
-        } else {
-            scene.camera = lookup_type(camera_table(), p, "camera").create(p, context, film);
+    const Node* camera_node = top.node("camera");
+    const Node camera_map = camera_node ? *camera_node : empty_map_at(top.pos());
+    Params p(camera_map, "camera");
+    const FilmSize film{view.settings.width, view.settings.height};
+    if (!p.has("type")) {
+        view.camera = camera_table().front().create(p, context, film);
+    } else {
+        view.camera = lookup_type(camera_table(), p, "camera").create(p, context, film);
+    }
+    p.finish();
+    return view;
+}
+
+std::shared_ptr<const World> build_world(const SceneDesc& desc, WorldCache* cache) {
+    Params top(desc.root, "scene");
+    BuildContext context{desc.base_dir, {}};
+    auto world = std::make_shared<World>();
+    std::string accelerator = RenderSettings{}.accelerator;
+    if (const Node* render_node = top.node("render")) {
+        if (const Node* name = render_node->is_map() ? render_node->find("accelerator") : nullptr) {
+            accelerator = check_name(node_string(*name, "render.accelerator"), accelerator_names(),
+                                     "accelerator", name->pos);
         }
-        p.finish();
     }
 
     if (const Node* background = top.node("background")) {
-        scene.background = node_color(*background, "background");
-        if (scene.background.r < 0 || scene.background.g < 0 || scene.background.b < 0) {
+        world->background = node_color(*background, "background");
+        if (world->background.r < 0 || world->background.g < 0 || world->background.b < 0) {
             throw SceneError(background->pos, "background must not be negative");
         }
     }
@@ -184,8 +223,8 @@ Scene build_scene(const SceneDesc& desc, const RenderOverrides& overrides) {
         Params p(node, what);
         auto material = lookup_type(material_table(), p, "material").create(p, context);
         p.finish();
-        scene.materials.push_back(std::move(material));
-        return static_cast<std::uint32_t>(scene.materials.size() - 1);
+        world->materials.push_back(std::move(material));
+        return static_cast<std::uint32_t>(world->materials.size() - 1);
     };
     if (const Node* materials = top.node("materials")) {
         if (!materials->is_map()) {
@@ -202,8 +241,8 @@ Scene build_scene(const SceneDesc& desc, const RenderOverrides& overrides) {
         const Node* node = p.node("material");
         if (!node) {
             if (!default_material) {
-                default_material = static_cast<std::uint32_t>(scene.materials.size());
-                scene.materials.push_back(std::make_unique<Matte>(Rgb(kDefaultAlbedo)));
+                default_material = static_cast<std::uint32_t>(world->materials.size());
+                world->materials.push_back(std::make_unique<Matte>(Rgb(kDefaultAlbedo)));
             }
             return *default_material;
         }
@@ -224,6 +263,39 @@ Scene build_scene(const SceneDesc& desc, const RenderOverrides& overrides) {
         return found->second;
     };
 
+    // A shape with its `transform`, or the one the cache holds for the same description (whose keys are
+    // then only marked as read: they were checked when it was built).
+    // The shapes this build uses: what the cache keeps afterwards.
+    std::map<std::string, std::shared_ptr<const Shape>> used_shapes;
+    const auto build_shape = [&](Params& shape_params,
+                                 const ShapeEntry& entry) -> std::shared_ptr<const Shape> {
+        std::string key;
+        if (cache) {
+            key = shape_key(shape_params.map(), desc.base_dir);
+            if (const auto found = cache->shapes.find(key); found != cache->shapes.end()) {
+                for (const std::string& k : shape_params.map().keys) {
+                    if (k != "material") {
+                        shape_params.node(k);
+                    }
+                }
+                used_shapes.emplace(key, found->second);
+                return found->second;
+            }
+        }
+        std::shared_ptr<const Shape> shape =
+            apply_transform(shape_params, entry.create(shape_params, context));  // `transform:`, any object
+        if (cache) {
+            used_shapes.emplace(std::move(key), shape);
+        }
+        return shape;
+    };
+    const auto add_object = [&](std::shared_ptr<const Shape> shape, std::uint32_t material,
+                                std::int32_t light_index) {
+        world->shapes.push_back(std::move(shape));
+        world->shape_materials.push_back(material);
+        world->shape_lights.push_back(light_index);
+    };
+
     if (const Node* objects = top.node("objects")) {
         if (!objects->is_sequence()) {
             throw SceneError(objects->pos, "objects must be a list, not " + objects->describe());
@@ -233,23 +305,13 @@ Scene build_scene(const SceneDesc& desc, const RenderOverrides& overrides) {
             const ShapeEntry& entry = lookup_type(shape_table(), p, "object");
             Params shape_params(objects->items[i], entry.name);
             shape_params.string("type");
-            auto shape = entry.create(shape_params, context);
-            shape = apply_transform(shape_params, std::move(shape));  // `transform:`, any object
+            std::shared_ptr<const Shape> shape = build_shape(shape_params, entry);
             const std::uint32_t material = material_for(shape_params);
             shape_params.finish();
-            scene.shapes.push_back(std::move(shape));
-            scene.shape_materials.push_back(material);
-            scene.shape_lights.push_back(-1);
-            // An object whose material emits is an area light, so that light sampling finds it.
-            if (emits_light(*scene.materials[material])) {
-                if (!(scene.shapes.back()->area() > 0)) {
-                    throw SceneError(p.pos(), "objects[" + std::to_string(i) + "] emits light, but a " +
-                                                  entry.name +
-                                                  " has no finite area: it cannot be an area light");
-                }
-                scene.shape_lights.back() = static_cast<std::int32_t>(scene.lights.size());
-                scene.lights.push_back(
-                    std::make_unique<AreaLight>(*scene.shapes.back(), *scene.materials[material], 1));
+            add_object(std::move(shape), 0, -1);
+            if (!attach_material(*world, world->shapes.size() - 1, material)) {
+                throw SceneError(p.pos(), "objects[" + std::to_string(i) + "] emits light, but a " +
+                                              entry.name + " has no finite area: it cannot be an area light");
             }
         }
     }
@@ -258,14 +320,13 @@ Scene build_scene(const SceneDesc& desc, const RenderOverrides& overrides) {
     std::int32_t next_light_index = -1;
     context.add_object = [&](Params& shape_params, std::unique_ptr<Material> material) {
         const ShapeEntry& entry = lookup_type(shape_table(), shape_params, "shape");
-        auto shape = apply_transform(shape_params, entry.create(shape_params, context));
+        std::shared_ptr<const Shape> shape = build_shape(shape_params, entry);
         shape_params.finish();
-        scene.shapes.push_back(std::move(shape));
-        scene.materials.push_back(std::move(material));
-        scene.shape_materials.push_back(static_cast<std::uint32_t>(scene.materials.size() - 1));
-        scene.shape_lights.push_back(next_light_index);
-        return std::pair<const Shape*, const Material*>{scene.shapes.back().get(),
-                                                        scene.materials.back().get()};
+        world->materials.push_back(std::move(material));
+        const Shape* added = shape.get();
+        add_object(std::move(shape), static_cast<std::uint32_t>(world->materials.size() - 1),
+                   next_light_index);
+        return std::pair<const Shape*, const Material*>{added, world->materials.back().get()};
     };
 
     if (const Node* lights = top.node("lights")) {
@@ -277,12 +338,12 @@ Scene build_scene(const SceneDesc& desc, const RenderOverrides& overrides) {
             const LightEntry& entry = lookup_type(light_table(), p, "light");
             Params light_params(lights->items[i], entry.name + " light");
             light_params.string("type");
-            next_light_index = static_cast<std::int32_t>(scene.lights.size());
+            next_light_index = static_cast<std::int32_t>(world->lights.size());
             auto light = entry.create(light_params, context);
             light_params.finish();
-            scene.ambient += light->ambient();
+            world->ambient += light->ambient();
             if (light->is_environment()) {
-                if (scene.environment) {
+                if (world->environment) {
                     light_params.fail("type", "a scene has at most one environment light");
                 }
                 if (top.node("background")) {
@@ -290,19 +351,62 @@ Scene build_scene(const SceneDesc& desc, const RenderOverrides& overrides) {
                                       "an environment light supplies the background: remove the scene's "
                                       "`background`");
                 }
-                scene.environment = light.get();
+                world->environment = light.get();
             }
-            scene.lights.push_back(std::move(light));
+            world->lights.push_back(std::move(light));
         }
     }
-    top.finish();
 
+    if (cache) {
+        cache->shapes = std::move(used_shapes);
+    }
     std::vector<const Shape*> shapes;
-    for (const auto& s : scene.shapes) {
+    for (const auto& s : world->shapes) {
         shapes.push_back(s.get());
     }
-    scene.accelerator = make_accelerator(scene.settings.accelerator, shapes);
+    if (cache && cache->accelerator.accelerator && cache->accelerator.name == accelerator &&
+        cache->accelerator.shapes == shapes) {
+        world->accelerator = cache->accelerator.accelerator;
+    } else {
+        world->accelerator = make_accelerator(accelerator, shapes);
+        if (cache) {
+            cache->accelerator = {accelerator, shapes, world->accelerator};
+        }
+    }
+    return world;
+}
+
+Scene build_scene(const SceneDesc& desc, WorldCache* cache) {
+    Scene scene;
+    scene.view = build_view(desc);
+    scene.world = build_world(desc, cache);
+    // The top level's own keys: every block above is read by one of the two halves.
+    Params top(desc.root, "scene");
+    for (const char* key : {"render", "camera", "background", "materials", "objects", "lights"}) {
+        top.node(key);
+    }
+    top.finish();
     return scene;
+}
+
+bool same_world(const SceneDesc& a, const SceneDesc& b) {
+    if (a.base_dir != b.base_dir) {
+        return false;
+    }
+    // The trees without the view's keys.
+    const auto world_part = [](const Node& root) {
+        Node accelerator;
+        if (const Node* render = root.find("render");
+            render && render->is_map() && render->find("accelerator")) {
+            accelerator = *render->find("accelerator");
+        }
+        Node world = without_key(without_key(root, "camera"), "render");
+        world.keys.push_back("render.accelerator");
+        world.key_positions.emplace_back();
+        world.items.push_back(accelerator);
+        return world;
+    };
+    return same_tree(world_part(a.root), world_part(b.root));
 }
 
 }  // namespace glint

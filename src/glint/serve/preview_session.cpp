@@ -37,11 +37,9 @@ std::string base64(const std::vector<unsigned char>& bytes) {
     return out;
 }
 
-// Builds a scene for the preview. The tree was checked against the preview limits already; the built
-// settings are checked again so that no reading of a value (a conversion, a default) gets past them.
-std::shared_ptr<const Scene> build_checked(const SceneDesc& desc) {
-    Scene scene = build_scene(desc);
-    const RenderSettings& s = scene.settings;
+// The preview's own limits, checked on the built settings too, so that no reading of a value (a
+// conversion, a default) gets past them; the tree was checked already.
+void check_preview_limits(const SceneDesc& desc, const RenderSettings& s) {
     const std::int64_t pixels = static_cast<std::int64_t>(s.width) * s.height;
     if (pixels > preview_limits::kMaxPixels || s.width > preview_limits::kMaxSide ||
         s.height > preview_limits::kMaxSide || s.samples_per_pixel > preview_limits::kMaxSamples ||
@@ -53,7 +51,6 @@ std::shared_ptr<const Scene> build_checked(const SceneDesc& desc) {
                              std::to_string(preview_limits::kMaxSamples) + " samples and depth " +
                              std::to_string(preview_limits::kMaxDepth) + "; use glint render beyond that");
     }
-    return std::make_shared<const Scene>(std::move(scene));
 }
 
 }  // namespace
@@ -68,7 +65,9 @@ PreviewSession::PreviewSession(const SceneDesc& desc, std::string display_name)
     }
     root_ = desc.root;
     yaml_ = write_scene_yaml(root_);
-    scene_ = build_checked(desc);
+    auto scene = std::make_shared<Scene>(build_scene(desc, &world_cache_));
+    check_preview_limits(desc, scene->view.settings);
+    scene_ = std::move(scene);
     render_thread_ = std::thread([this] { render_loop(); });
 }
 
@@ -104,15 +103,37 @@ std::uint64_t PreviewSession::apply_request(std::string_view request_body) {
     return apply(edits);
 }
 
-// Called with edit_mutex_ held.
+// Called with edit_mutex_ held. Rebuilds only what the edits touched: a change of the camera or the
+// render settings keeps the built world (no mesh read, no BVH built); a change of the world reuses every
+// shape whose description is unchanged and the accelerator over them (world_cache_); a change that
+// changes nothing keeps everything, the accumulation included.
 std::uint64_t PreviewSession::commit(EditedScene edited) {
-    std::shared_ptr<const Scene> scene = build_checked(edited.desc);
+    SceneDesc current;
+    std::shared_ptr<const Scene> scene;
+    {
+        std::lock_guard lock(mutex_);
+        current.root = root_;
+        scene = scene_;
+    }
+    current.base_dir = base_dir_;
+    if (same_tree(current.root, edited.desc.root)) {
+        std::lock_guard lock(mutex_);
+        return generation_.load();
+    }
+    auto rebuilt = std::make_shared<Scene>();
+    rebuilt->view = build_view(edited.desc);
+    check_preview_limits(edited.desc, rebuilt->view.settings);
+    if (same_world(current, edited.desc)) {
+        rebuilt->world = scene->world;
+    } else {
+        rebuilt->world = build_scene(edited.desc, &world_cache_).world;  // checks the top level too
+    }
     std::uint64_t generation = 0;
     {
         std::lock_guard lock(mutex_);
         root_ = std::move(edited.desc.root);
         yaml_ = std::move(edited.yaml);
-        scene_ = std::move(scene);
+        scene_ = std::move(rebuilt);
         generation = generation_.load() + 1;
         generation_ = generation;  // the render thread's cancel check sees this at its next tile
         status_ = {generation, ""};
@@ -123,7 +144,12 @@ std::uint64_t PreviewSession::commit(EditedScene edited) {
 
 PreviewSession::State PreviewSession::state() const {
     std::lock_guard lock(mutex_);
-    return {generation_.load(), root_, yaml_, scene_->settings};
+    return {generation_.load(), root_, yaml_, scene_->view.settings};
+}
+
+std::shared_ptr<const World> PreviewSession::world() const {
+    std::lock_guard lock(mutex_);
+    return scene_->world;
 }
 
 std::shared_ptr<const PreviewFrame> PreviewSession::latest_frame() const {
@@ -149,14 +175,14 @@ std::optional<PreviewSession::FocusHit> PreviewSession::focus_at(double x, doubl
         std::lock_guard lock(mutex_);
         scene = scene_;
     }
-    const double w = scene->settings.width, h = scene->settings.height;
+    const double w = scene->view.settings.width, h = scene->view.settings.height;
     if (!(x >= 0 && x <= w && y >= 0 && y <= h)) {
         return std::nullopt;
     }
-    const Ray ray = scene->camera->generate_ray({x, y}, {0.5, 0.5});
-    const Ray axis = scene->camera->generate_ray({w / 2, h / 2}, {0.5, 0.5});
+    const Ray ray = scene->view.camera->generate_ray({x, y}, {0.5, 0.5});
+    const Ray axis = scene->view.camera->generate_ray({w / 2, h / 2}, {0.5, 0.5});
     Hit hit;
-    if (!scene->intersect(ray, std::numeric_limits<double>::infinity(), hit)) {
+    if (!scene->world->intersect(ray, std::numeric_limits<double>::infinity(), hit)) {
         return std::nullopt;
     }
     const double distance = hit.t * length(ray.direction);
@@ -165,7 +191,8 @@ std::optional<PreviewSession::FocusHit> PreviewSession::focus_at(double x, doubl
 }
 
 void PreviewSession::publish(const Image& image, std::uint64_t generation, std::uint32_t samples,
-                             std::uint32_t target, double mrays, double seconds) {
+                             std::uint32_t target, const RenderStats& stats, double seconds) {
+    const double mrays = stats.mrays_per_second();
     auto frame = std::make_shared<PreviewFrame>();
     frame->generation = generation;
     frame->width = image.width;
@@ -174,6 +201,7 @@ void PreviewSession::publish(const Image& image, std::uint64_t generation, std::
     frame->target = target;
     frame->mrays_per_second = mrays;
     frame->seconds = seconds;
+    frame->nonfinite_samples = stats.nonfinite_samples;
     frame->png = encode_png(image);
     {
         std::lock_guard lock(mutex_);
@@ -190,6 +218,13 @@ void PreviewSession::publish(const Image& image, std::uint64_t generation, std::
                                {"mrays_per_second", std::round(mrays * 100) / 100},
                                {"seconds", std::round(seconds * 1000) / 1000},
                                {"png", base64(frame->png)}};
+        if (stats.nonfinite_samples > 0) {
+            // Left out of the picture, as by glint render, and named so that the page can say where.
+            data["nonfinite"] = {{"samples", stats.nonfinite_samples},
+                                 {"x", stats.first_nonfinite_x},
+                                 {"y", stats.first_nonfinite_y},
+                                 {"sample", stats.first_nonfinite_sample}};
+        }
         frame->event = "event: frame\ndata: " + data.dump() + "\n\n";
         frame_ = std::move(frame);
     }
@@ -223,21 +258,22 @@ void PreviewSession::render_loop() {
         try {
             if (!progressive) {
                 started = std::chrono::steady_clock::now();
-                progressive = std::make_unique<ProgressiveRender>(*scene);
-                const double pixels = static_cast<double>(scene->settings.width) * scene->settings.height;
+                progressive = std::make_unique<ProgressiveRender>(*scene->world, scene->view);
+                const double pixels =
+                    static_cast<double>(scene->view.settings.width) * scene->view.settings.height;
                 const int block =
                     std::max(1, static_cast<int>(std::lround(std::sqrt(pixels / kCoarseSamples))));
                 Image coarse;
                 if (block > 1 && progressive->coarse_preview(block, coarse, cancelled)) {
                     publish(
-                        coarse, generation, 0, progressive->target_samples(), progressive->mrays_per_second(),
+                        coarse, generation, 0, progressive->target_samples(), progressive->stats(),
                         std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count());
                 }
                 continue;
             }
             if (progressive->next_pass(cancelled)) {
                 publish(progressive->film().to_image(), generation, progressive->samples_done(),
-                        progressive->target_samples(), progressive->mrays_per_second(),
+                        progressive->target_samples(), progressive->stats(),
                         std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count());
             }
         } catch (const std::exception& e) {

@@ -1,8 +1,9 @@
 // The state behind `glint serve`: the scene description being edited, the scene built from it, and a
 // render thread that refines it pass after pass and publishes each frame for the browsers watching.
 //
-// Any change restarts the accumulation at once: the render thread abandons its pass at the next tile,
-// shows a coarse preview (one sample per block of pixels) of the new view, then refines it.
+// An edit rebuilds only what it touches (commit()). Any change restarts the accumulation at once: the render
+// thread abandons its pass at the next tile, shows a coarse preview (one sample per block of pixels) of the
+// new view, then refines it.
 #pragma once
 
 #include <atomic>
@@ -34,7 +35,8 @@ struct PreviewFrame {
     std::uint32_t samples = 0;  // samples per pixel so far (0: the coarse preview)
     std::uint32_t target = 0;   // samples per pixel when complete
     double mrays_per_second = 0;
-    double seconds = 0;  // since the change that started this accumulation
+    double seconds = 0;                   // since the change that started this accumulation
+    std::uint64_t nonfinite_samples = 0;  // NaN or infinite samples so far, left out of the picture
     std::vector<unsigned char> png;
     std::string event;  // the whole server-sent event ("event: frame\ndata: {…}\n\n"), made once for all
 };
@@ -69,6 +71,8 @@ class PreviewSession {
         RenderSettings settings;  // as built: the defaults filled in
     };
     State state() const;
+    // The built world being rendered: the same object after an edit that kept it (tests use this).
+    std::shared_ptr<const World> world() const;
     const std::string& display_name() const { return display_name_; }
 
     std::shared_ptr<const PreviewFrame> latest_frame() const;
@@ -93,7 +97,7 @@ class PreviewSession {
   private:
     void render_loop();
     void publish(const Image& image, std::uint64_t generation, std::uint32_t samples, std::uint32_t target,
-                 double mrays, double seconds);
+                 const RenderStats& stats, double seconds);
 
     std::uint64_t commit(EditedScene edited);
 
@@ -106,6 +110,7 @@ class PreviewSession {
     Node root_;
     std::string yaml_;
     std::shared_ptr<const Scene> scene_;
+    WorldCache world_cache_;  // used with edit_mutex_ held (and by the constructor)
     std::shared_ptr<const PreviewFrame> frame_;
     PreviewStatus status_;
     std::uint64_t next_frame_id_ = 1;

@@ -386,7 +386,14 @@ std::optional<LimitViolation> find_limit_violation(const Node& root) {
         render = nullptr;  // the builder says what is wrong with it
     }
     for (const preview_limits::NumericLimit& limit : preview_limits::kNumericLimits) {
-        const Node* section = root.is_map() ? root.find(std::string(limit.section)) : nullptr;
+        // The section's map, its dotted path walked from the top ("render.integrator").
+        const Node* section = &root;
+        for (size_t start = 0; section && start <= limit.section.size();) {
+            const size_t dot = std::min(limit.section.find('.', start), limit.section.size());
+            section = section->is_map() ? section->find(std::string(limit.section.substr(start, dot - start)))
+                                        : nullptr;
+            start = dot + 1;
+        }
         const Node* node = section && section->is_map() ? section->find(std::string(limit.key)) : nullptr;
         const auto value = finite_number(node);
         if (value && *value > static_cast<double>(limit.maximum)) {

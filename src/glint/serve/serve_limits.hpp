@@ -34,11 +34,12 @@ struct NumericLimit {
     std::string_view section, key;
     std::int64_t maximum;
 };
-inline constexpr std::array<NumericLimit, 4> kNumericLimits = {{
+inline constexpr std::array<NumericLimit, 5> kNumericLimits = {{
     {"render", "width", kMaxSide},
     {"render", "height", kMaxSide},
     {"render", "samples", kMaxSamples},
     {"render", "max_depth", kMaxDepth},
+    {"render.integrator", "max_depth", kMaxDepth},  // an integrator's own, which wins over render's
 }};
 
 // --- One edit request ---------------------------------------------------------------------------------

@@ -17,6 +17,12 @@ inline constexpr std::int64_t kMaxFilmPixels = std::int64_t{1} << 27;
 inline constexpr std::uint32_t kMaxSamplesPerPixel = 1u << 20;
 inline constexpr int kMaxPathDepth = 1024;
 
+// The message for a depth past kMaxPathDepth, the same wherever it is given.
+inline std::string max_depth_limit_message(const std::string& what) {
+    return what + " is more than " + std::to_string(kMaxPathDepth) +
+           " bounces (paths that long carry no visible light, and every bounce costs time)";
+}
+
 // How to render: the scene's `render:` block with the command line's overrides applied.
 struct RenderSettings {
     int width = 640;
@@ -25,7 +31,7 @@ struct RenderSettings {
     std::string sampler = "jittered";
     std::string integrator = "raycast";
     std::string accelerator = "bvh";
-    int max_depth = 5;
+    int max_depth = 5;  // the integrator's, unless it gives its own
     std::uint64_t seed = 1;
     int threads = 0;     // 0: all cores
     int tile_size = 16;  // pixels per tile side; the image does not depend on it
