@@ -23,7 +23,7 @@
 #include "commands.hpp"
 #include "glint/core/vec.hpp"
 #include "glint/image/image_io.hpp"
-#include "glint/render/settings.hpp"
+#include "glint/world/settings.hpp"
 #include "glint/sampling/convergence.hpp"
 #include "glint/sampling/multijittered.hpp"
 #include "glint/sampling/pattern_stats.hpp"
