@@ -15,7 +15,8 @@ class Instance final : public Shape {
     bool occluded(const Ray& ray, double t_max) const override;
     // Only for similarity transforms (rotation, uniform scale, mirror, translation): other affine maps
     // stretch areas unevenly, so the shape's uniform samples would no longer be uniform. Otherwise 0
-    // and no sample, like an unbounded shape.
+    // and no sample, like an unbounded shape (so the scene refuses such an object as a light, although
+    // sample_seen_from() below samples it exactly).
     double area() const override;
     std::optional<ShapeSample> sample_area(Point2 u) const override;
 
@@ -28,7 +29,7 @@ class Instance final : public Shape {
     // |det M| / |M w|³: the density is divided by it, so it is exact for scale and shear too.
     std::optional<SeenSample> sample_seen_from(const Vec3& ref, Point2 u) const override;
     double pdf_seen_from(const Vec3& ref, const Vec3& wi, const Hit& on_shape) const override;
-    bool samples_by_area() const override { return false; }
+    bool samples_by_area() const override { return samples_world_area(); }
 
     const Transform& transform() const { return to_world_; }
     const Shape& shape() const { return *shape_; }  // the shape in its own space
