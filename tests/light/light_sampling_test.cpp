@@ -4,6 +4,7 @@
 #include "glint/core/frame.hpp"
 #include "glint/core/hash.hpp"
 #include "glint/geometry/disk.hpp"
+#include "glint/geometry/instance.hpp"
 #include "glint/geometry/rectangle.hpp"
 #include "glint/geometry/sphere.hpp"
 #include "glint/light/area.hpp"
@@ -136,6 +137,23 @@ TEST(LightSampling, SphereLightFromOutsideSamplesItsConeUniformly) {
     const AreaEmitter emitter(Rgb(1.0), false);
     const AreaLight light(sphere, emitter, 1);
     EXPECT_NEAR(1 / light.sample(at, {0.3, 0.6})->pdf, 2 * kPi * (1 - cos_max), 1e-12);
+}
+
+TEST(LightSampling, TransformedSphereLightsSampleTheirCone) {
+    // A moved sphere: uniform over its cone, as the sphere placed by its centre.
+    const Hit at = surface_at({0.5, 0, 0.2}, {0, 1, 0});
+    const Vec3 center{0, 3, 0};
+    const Instance moved(std::make_unique<Sphere>(Vec3{}, 1), Transform::translate(center));
+    const Vec3 to_center = center - at.point;
+    check_area_light(moved, at, std::sqrt(1 - 1 / length_squared(to_center)), normalize(to_center));
+    // An ellipsoid (semi-axes 1.6, 0.5, 0.9, turned): the cone of its unit sphere, its density changed by
+    // the transform's Jacobian. The histogram covers the cone of a sphere of radius 1.6 around it, with
+    // the coarse cells for a density that drops to zero inside them, at the ellipsoid's outline.
+    const Instance ellipsoid(std::make_unique<Sphere>(Vec3{}, 1), Transform::scale({1.6, 0.5, 0.9})
+                                                                      ->then(Transform::rotate({1, 0, 1}, 40))
+                                                                      .then(Transform::translate(center)));
+    check_area_light(ellipsoid, at, std::sqrt(1 - sqr(1.6) / length_squared(to_center)), normalize(to_center),
+                     true);
 }
 
 TEST(LightSampling, SphereLightFromInsideSamplesByArea) {

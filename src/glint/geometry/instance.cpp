@@ -10,6 +10,14 @@
 
 namespace glint {
 
+Instance::Instance(std::unique_ptr<Shape> shape, const Transform& to_world)
+    : shape_(std::move(shape)),
+      to_world_(to_world),
+      uniform_scale_(to_world.uniform_scale()),
+      // The triple product of the images of the axes, the columns of M.
+      abs_determinant_(std::abs(
+          dot(to_world.vector({1, 0, 0}), cross(to_world.vector({0, 1, 0}), to_world.vector({0, 0, 1}))))) {}
+
 bool Instance::intersect(const Ray& ray, double t_max, Hit& hit) const {
     Hit local;
     if (!shape_->intersect(to_object(ray), t_max, local)) {
@@ -34,8 +42,7 @@ bool Instance::occluded(const Ray& ray, double t_max) const {
 }
 
 double Instance::area() const {
-    const std::optional<double> s = to_world_.uniform_scale();
-    return s ? *s * *s * shape_->area() : 0;
+    return uniform_scale_ ? *uniform_scale_ * *uniform_scale_ * shape_->area() : 0;
 }
 
 std::optional<ShapeSample> Instance::sample_area(Point2 u) const {
@@ -51,6 +58,44 @@ std::optional<ShapeSample> Instance::sample_area(Point2 u) const {
     s->normal = normalize(to_world_.normal(s->normal));
     s->pdf_area = 1 / world_area;
     return s;
+}
+
+double Instance::world_per_local_density(const Vec3& wi) const {
+    // With v = M⁻¹ wi, the local direction is w = v / |v| and |M w| = 1 / |v|.
+    const double stretch = length(to_world_.inverse_vector(wi));
+    return 1 / (abs_determinant_ * stretch * stretch * stretch);
+}
+
+std::optional<SeenSample> Instance::sample_seen_from(const Vec3& ref, Point2 u) const {
+    if (samples_world_area()) {
+        return Shape::sample_seen_from(ref, u);
+    }
+    const std::optional<SeenSample> local = shape_->sample_seen_from(to_world_.inverse_point(ref), u);
+    if (!local) {
+        return std::nullopt;
+    }
+    const Vec3 point = to_world_.point(local->point);
+    const Vec3 to_point = point - ref;
+    const double distance = length(to_point);
+    if (!(distance > 0)) {
+        return std::nullopt;
+    }
+    const Vec3 wi = to_point / distance;
+    return SeenSample{point, normalize(to_world_.normal(local->normal)), wi,
+                      local->pdf_solid_angle * world_per_local_density(wi)};
+}
+
+double Instance::pdf_seen_from(const Vec3& ref, const Vec3& wi, const Hit& on_shape) const {
+    if (samples_world_area()) {
+        return Shape::pdf_seen_from(ref, wi, on_shape);
+    }
+    // The hit in the shape's space: normals move back by Mᵀ, the inverse of the inverse transpose.
+    Hit local;
+    local.point = to_world_.inverse_point(on_shape.point);
+    local.normal = normalize(to_world_.inverse().normal(on_shape.normal));
+    local.shading_normal = local.normal;
+    const Vec3 local_wi = normalize(to_world_.inverse_vector(wi));
+    return shape_->pdf_seen_from(to_world_.inverse_point(ref), local_wi, local) * world_per_local_density(wi);
 }
 
 namespace {

@@ -23,6 +23,14 @@ struct ShapeSample {
     double pdf_area = 0;  // density per unit area
 };
 
+// A point chosen on a shape as seen from a reference point: what a light with area needs to light it.
+struct SeenSample {
+    Vec3 point;
+    Vec3 normal;                 // unit, outward
+    Vec3 wi;                     // unit, from the reference point towards `point`
+    double pdf_solid_angle = 0;  // density of wi per steradian at the reference point
+};
+
 class Shape {
   public:
     virtual ~Shape() = default;
@@ -44,6 +52,21 @@ class Shape {
     // Shapes that cannot be lights (unbounded ones) keep the defaults.
     virtual double area() const { return 0; }
     virtual std::optional<ShapeSample> sample_area(Point2 /*u*/) const { return std::nullopt; }
+
+    // A point of the surface for the reference point `ref` to look at, with the solid-angle density of
+    // the direction towards it (pbrt-v4's Shape::Sample(ctx, u)). A shape may favour what `ref` can see:
+    // a sphere samples the cone it subtends. The default is sample_area() converted to solid angle, by
+    // distance² / |cos θ| at the sampled point. Nothing when the sample is degenerate (at `ref`, or seen
+    // edge-on) or the shape cannot be sampled.
+    virtual std::optional<SeenSample> sample_seen_from(const Vec3& ref, Point2 u) const;
+
+    // The density with which sample_seen_from(ref, ·) returns the unit direction wi, whose ray from ref
+    // first meets this shape at `on_shape` (its point and outward normal, as intersect() gives them).
+    virtual double pdf_seen_from(const Vec3& ref, const Vec3& wi, const Hit& on_shape) const;
+
+    // Whether sample_seen_from() is the default: sample_area() converted to solid angle, uniform by area
+    // whatever the reference point. An Instance keeps such shapes on uniform area sampling in world space.
+    virtual bool samples_by_area() const { return true; }
 };
 
 // The name → constructor table of shapes ("sphere", "plane", …). Each constructor reads its own

@@ -1,6 +1,7 @@
 // Sphere {type: sphere, center: [x, y, z], radius: r}.
 #include "glint/geometry/sphere.hpp"
 
+#include "glint/core/frame.hpp"
 #include "glint/params/params.hpp"
 
 namespace glint {
@@ -39,6 +40,54 @@ std::optional<ShapeSample> Sphere::sample_area(Point2 u) const {
     const double phi = 2 * kPi * u.y;
     const Vec3 n{r * std::cos(phi), r * std::sin(phi), z};
     return ShapeSample{center_ + radius_ * n, n, 1 / area()};
+}
+
+bool Sphere::seen_from_outside(const Vec3& ref) const {
+    // A margin of relative 1e-9 keeps points on the surface (rounding either way) on area sampling.
+    return length_squared(ref - center_) > sqr(radius_) * (1 + 1e-9);
+}
+
+namespace {
+// 1 − cos θ_max of the cone a sphere subtends, from sin² θ_max = R²/d², without cancellation:
+// 1 − cos = sin² / (1 + cos). (pbrt-v4 switches to a Taylor series for small cones instead.)
+double one_minus_cos_max(double sin2_max) {
+    return sin2_max / (1 + safe_sqrt(1 - sin2_max));
+}
+}  // namespace
+
+std::optional<SeenSample> Sphere::sample_seen_from(const Vec3& ref, Point2 u) const {
+    if (!seen_from_outside(ref)) {
+        return Shape::sample_seen_from(ref, u);
+    }
+    // A uniform direction in the cone towards the centre, then the point of the sphere it meets first,
+    // found by the angle α at the centre (computed directly, not by intersecting a ray).
+    const Vec3 to_center = center_ - ref;
+    const double d2 = length_squared(to_center);
+    const double sin2_max = sqr(radius_) / d2;
+    const double sin_max = std::sqrt(sin2_max);
+    const double omc_max = one_minus_cos_max(sin2_max);
+    const double omc = u.x * omc_max;  // 1 − cos θ, uniform in [0, 1 − cos θ_max]
+    const double cos_theta = 1 - omc;
+    const double sin2_theta = omc * (2 - omc);
+    const double cos_alpha = sin2_theta / sin_max + cos_theta * safe_sqrt(1 - sin2_theta / sin2_max);
+    const double sin_alpha = safe_sqrt(1 - cos_alpha * cos_alpha);
+    const double phi = 2 * kPi * u.y;
+    const Frame frame = Frame::from_normal(to_center / std::sqrt(d2));
+    const Vec3 normal = frame.to_world({-sin_alpha * std::cos(phi), -sin_alpha * std::sin(phi), -cos_alpha});
+    const Vec3 point = center_ + radius_ * normal;
+    const Vec3 to_point = point - ref;
+    const double distance = length(to_point);
+    if (!(distance > 0)) {
+        return std::nullopt;
+    }
+    return SeenSample{point, normal, to_point / distance, 1 / (2 * kPi * omc_max)};
+}
+
+double Sphere::pdf_seen_from(const Vec3& ref, const Vec3& wi, const Hit& on_shape) const {
+    if (!seen_from_outside(ref)) {
+        return Shape::pdf_seen_from(ref, wi, on_shape);
+    }
+    return 1 / (2 * kPi * one_minus_cos_max(sqr(radius_) / length_squared(center_ - ref)));
 }
 
 std::unique_ptr<Shape> Sphere::create(Params& params, const BuildContext&) {

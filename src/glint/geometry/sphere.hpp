@@ -61,12 +61,21 @@ class Sphere final : public Shape {
     bool occluded(const Ray& ray, double t_max) const override;
     double area() const override { return 4 * kPi * radius_ * radius_; }
     std::optional<ShapeSample> sample_area(Point2 u) const override;
+    // Seen from outside, uniformly over the cone of directions the sphere subtends (pbrt-v4 §6.2.4): no
+    // sample lands on the far side, and the density is one constant. From inside (or on the surface),
+    // by area, as every shape.
+    std::optional<SeenSample> sample_seen_from(const Vec3& ref, Point2 u) const override;
+    double pdf_seen_from(const Vec3& ref, const Vec3& wi, const Hit& on_shape) const override;
+    bool samples_by_area() const override { return false; }
     const Vec3& center() const { return center_; }
     double radius() const { return radius_; }
 
     static std::unique_ptr<Shape> create(Params& params, const BuildContext& context);
 
   private:
+    // Whether `ref` is outside, where the cone sampling applies.
+    bool seen_from_outside(const Vec3& ref) const;
+
     Vec3 center_;
     double radius_;
 };

@@ -1,7 +1,5 @@
 #include "glint/light/area.hpp"
 
-#include "glint/core/frame.hpp"
-#include "glint/geometry/sphere.hpp"
 #include "glint/params/build_context.hpp"
 #include "glint/params/params.hpp"
 
@@ -25,69 +23,19 @@ bool emits_light(const Material& material) {
 }
 
 AreaLight::AreaLight(const Shape& shape, const Material& material, int samples)
-    : shape_(&shape), material_(&material), sphere_(dynamic_cast<const Sphere*>(&shape)), samples_(samples) {}
-
-bool AreaLight::sees_sphere_from_outside(const Vec3& p) const {
-    // A margin of relative 1e-9 keeps points on the surface (rounding either way) on area sampling.
-    return sphere_ && length_squared(p - sphere_->center()) > sqr(sphere_->radius()) * (1 + 1e-9);
-}
-
-namespace {
-// 1 − cos θ_max of the cone a sphere subtends, from sin² θ_max = R²/d², without cancellation:
-// 1 − cos = sin² / (1 + cos).
-double one_minus_cos_max(double sin2_max) {
-    return sin2_max / (1 + safe_sqrt(1 - sin2_max));
-}
-}  // namespace
+    : shape_(&shape), material_(&material), samples_(samples) {}
 
 std::optional<LightSample> AreaLight::sample(const Hit& at, Point2 u) const {
+    const std::optional<SeenSample> seen = shape_->sample_seen_from(at.point, u);
+    if (!seen) {
+        return std::nullopt;
+    }
     LightSample s;
     s.delta = false;
-    Vec3 normal;
-    if (sees_sphere_from_outside(at.point)) {
-        // Uniform direction in the cone towards the sphere, then the point of the sphere it meets
-        // (pbrt-v4 §6.2.4, with the angle α at the centre computed directly).
-        const Vec3 to_center = sphere_->center() - at.point;
-        const double d2 = length_squared(to_center);
-        const double sin2_max = sqr(sphere_->radius()) / d2;
-        const double sin_max = std::sqrt(sin2_max);
-        const double omc_max = one_minus_cos_max(sin2_max);
-        const double omc = u.x * omc_max;  // 1 − cos θ, uniform in [0, 1 − cos θ_max]
-        const double cos_theta = 1 - omc;
-        const double sin2_theta = omc * (2 - omc);
-        const double cos_alpha = sin2_theta / sin_max + cos_theta * safe_sqrt(1 - sin2_theta / sin2_max);
-        const double sin_alpha = safe_sqrt(1 - cos_alpha * cos_alpha);
-        const double phi = 2 * kPi * u.y;
-        const Frame frame = Frame::from_normal(to_center / std::sqrt(d2));
-        normal = frame.to_world({-sin_alpha * std::cos(phi), -sin_alpha * std::sin(phi), -cos_alpha});
-        s.position = sphere_->center() + sphere_->radius() * normal;
-        s.pdf = 1 / (2 * kPi * omc_max);
-        const Vec3 to_light = s.position - at.point;
-        const double distance = length(to_light);
-        if (!(distance > 0)) {
-            return std::nullopt;
-        }
-        s.wi = to_light / distance;
-    } else {
-        const std::optional<ShapeSample> ss = shape_->sample_area(u);
-        if (!ss) {
-            return std::nullopt;
-        }
-        const Vec3 to_light = ss->point - at.point;
-        const double d2 = length_squared(to_light);
-        if (!(d2 > 0)) {
-            return std::nullopt;
-        }
-        s.wi = to_light / std::sqrt(d2);
-        const double cos_light = std::abs(dot(ss->normal, s.wi));
-        if (cos_light == 0) {
-            return std::nullopt;
-        }
-        s.position = ss->point;
-        s.pdf = ss->pdf_area * d2 / cos_light;  // area density → solid-angle density
-        normal = ss->normal;
-    }
-    s.radiance = material_->emitted(light_hit(s.position, normal), -s.wi);
+    s.wi = seen->wi;
+    s.position = seen->point;
+    s.pdf = seen->pdf_solid_angle;
+    s.radiance = material_->emitted(light_hit(s.position, seen->normal), -s.wi);
     if (s.radiance.is_black() || !std::isfinite(s.pdf)) {
         return std::nullopt;
     }
@@ -95,18 +43,7 @@ std::optional<LightSample> AreaLight::sample(const Hit& at, Point2 u) const {
 }
 
 double AreaLight::pdf(const Hit& at, const Vec3& wi, const Hit* on_light) const {
-    if (sees_sphere_from_outside(at.point)) {
-        return 1 / (2 * kPi *
-                    one_minus_cos_max(sqr(sphere_->radius()) / length_squared(sphere_->center() - at.point)));
-    }
-    if (!on_light) {
-        return 0;
-    }
-    const double cos_light = std::abs(dot(on_light->normal, wi));
-    if (cos_light == 0) {
-        return 0;
-    }
-    return length_squared(on_light->point - at.point) / (cos_light * shape_->area());
+    return on_light ? shape_->pdf_seen_from(at.point, wi, *on_light) : 0;
 }
 
 std::unique_ptr<Light> AreaLight::create(Params& params, const BuildContext& context) {

@@ -6,17 +6,17 @@
 
 namespace glint {
 
-class Sphere;
-
 // A light with area: a shape whose material emits (material.emitted() ≠ 0). Every object with an
 // emitting material becomes one automatically, and {type: area, shape: {…}, radiance: L} adds such an
 // object (see AreaEmitter). The radiance a light sample carries is material.emitted() at the sampled
 // point, the very function a camera or BSDF ray that hits the shape sees, so light sampling and BSDF
 // sampling estimate the same integral (what multiple importance sampling needs).
 //
-// Sampling: spheres seen from outside by the cone of directions they subtend (uniform in solid angle,
-// pbrt-v4 §6.2.4: no samples wasted on the far side); every other shape uniformly by area, converted
-// to solid angle by distance² / |cos θ_light|. Soft shadows with umbra and penumbra follow.
+// Sampling: the shape chooses the point, as seen from the shading point (Shape::sample_seen_from):
+// spheres seen from outside, also through a transform, by the cone of directions they subtend
+// (uniform in solid angle, pbrt-v4 §6.2.4: no samples wasted on the far side); every other shape
+// uniformly by area, converted to solid angle by distance² / |cos θ_light|. Soft shadows with umbra and
+// penumbra follow.
 class AreaLight final : public Light {
   public:
     AreaLight(const Shape& shape, const Material& material, int samples);
@@ -29,12 +29,8 @@ class AreaLight final : public Light {
     static std::unique_ptr<Light> create(Params& params, const BuildContext& context);
 
   private:
-    // The cone sampling of a sphere applies from outside it only.
-    bool sees_sphere_from_outside(const Vec3& p) const;
-
     const Shape* shape_;
     const Material* material_;
-    const Sphere* sphere_;  // shape_ when it is a sphere, else nullptr
     int samples_;
 };
 
