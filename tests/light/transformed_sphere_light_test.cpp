@@ -27,7 +27,7 @@ objects:
   - {type: plane, normal: [0, 1, 0], material: {type: matte, albedo: 0.5}}
   - {type: sphere, )" + sphere + R"(, material: {type: emissive, radiance: 4}}
 )");
-    EXPECT_EQ(scene.lights.size(), 1u);
+    EXPECT_EQ(scene.world->lights.size(), 1u);
     return test::render_film(scene);
 }
 
