@@ -216,7 +216,7 @@ static int run(int argc, char** argv) {
     render->add_option(
         "--sampler", options.flags.sampler, "Sample pattern (" + [] {
             std::string names;
-            for (const auto& n : glint::sampler_names()) {
+            for (const auto& n : glint::sampler_table().names()) {
                 names += (names.empty() ? "" : ", ") + n;
             }
             return names;
@@ -224,7 +224,7 @@ static int run(int argc, char** argv) {
     render->add_option(
         "--integrator", options.flags.integrator, "How light is computed (" + [] {
             std::string names;
-            for (const auto& n : glint::integrator_names()) {
+            for (const auto& n : glint::integrator_table().names()) {
                 names += (names.empty() ? "" : ", ") + n;
             }
             return names;

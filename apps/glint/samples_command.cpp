@@ -261,7 +261,7 @@ void run_samples(const SamplesOptions& options) {
     const auto sampler = glint::make_sampler(options.pattern, options.count);
     if (!sampler) {
         std::string names;
-        for (const std::string& name : glint::sampler_names())
+        for (const std::string& name : glint::sampler_table().names())
             names += (names.empty() ? "" : ", ") + name;
         fail(kExitBadInput, "unknown pattern '" + options.pattern + "' (known: " + names + ")");
     }
@@ -321,7 +321,7 @@ void add_samples_command(CLI::App& app) {
     CLI::App* cmd =
         app.add_subcommand("samples", "Show or measure a sample pattern (points, plot, statistics)");
     std::string names;
-    for (const std::string& name : glint::sampler_names())
+    for (const std::string& name : glint::sampler_table().names())
         names += (names.empty() ? "" : ", ") + name;
     cmd->add_option("--pattern", options->pattern, "Sample pattern (" + names + ")");
     cmd->add_option("--count", options->count,

@@ -98,7 +98,7 @@ void run_convergence(std::uint32_t pixels, std::uint32_t max_count, std::uint64_
     std::vector<std::uint32_t> counts;
     for (std::uint32_t n = 1; n <= max_count; n *= 4)
         counts.push_back(n);
-    const std::vector<std::string> patterns = glint::sampler_names();
+    const std::vector<std::string> patterns = glint::sampler_table().names();
     const std::vector<glint::TestIntegrand> integrands = {glint::edge_integrand(), glint::smooth_integrand()};
     const auto start = std::chrono::steady_clock::now();
     const std::vector<glint::ConvergenceCurve> curves =

@@ -43,7 +43,7 @@ TEST(SamplerTable, HasEveryPattern) {
     for (const std::string& name : kAllPatterns) {
         EXPECT_NE(make_sampler(name, 4), nullptr) << name;
     }
-    EXPECT_EQ(sampler_names().size(), kAllPatterns.size());
+    EXPECT_EQ(sampler_table().names().size(), kAllPatterns.size());
     EXPECT_EQ(make_sampler("no-such-pattern", 4), nullptr);
 }
 

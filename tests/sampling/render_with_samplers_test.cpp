@@ -38,7 +38,7 @@ TEST(SamplersInRender, EverySamplerRendersTheSameImage) {
     std::uint32_t taken = 0;
     const double reference = mean_image_value("random", 64, &taken);
     ASSERT_GT(reference, 0.01);
-    for (const std::string& name : sampler_names()) {
+    for (const std::string& name : sampler_table().names()) {
         const double mean = mean_image_value(name, 16, &taken);
         EXPECT_EQ(taken, 16u) << name;
         EXPECT_NEAR(mean, reference, 0.03 * reference) << name;

@@ -155,7 +155,7 @@ TEST_F(PreviewServerTest, SceneIsSentAsJsonWithTheTablesNames) {
     EXPECT_EQ(state["scene"]["camera"]["eye"], json::parse("[0, 1.6, 7]"));
     EXPECT_EQ(state["scene"]["materials"]["red"]["type"], "matte");
     // The page's menus are the sampler table, in its order.
-    const std::vector<std::string> names = glint::sampler_names();
+    const std::vector<std::string> names = glint::sampler_table().names();
     ASSERT_EQ(state["samplers"].size(), names.size());
     for (size_t i = 0; i < names.size(); ++i) {
         EXPECT_EQ(state["samplers"][i]["name"], names[i]);

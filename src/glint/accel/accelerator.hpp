@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "glint/geometry/shape.hpp"
+#include "glint/params/name_table.hpp"
 
 namespace glint {
 
@@ -30,7 +31,7 @@ struct AcceleratorEntry {
     std::string summary;
     AcceleratorFactory create;
 };
-const std::vector<AcceleratorEntry>& accelerator_table();
+const NameTable<AcceleratorEntry>& accelerator_table();
 std::unique_ptr<Accelerator> make_accelerator(const std::string& name, std::span<const Shape* const> shapes);
 
 }  // namespace glint

@@ -5,8 +5,8 @@
 
 namespace glint {
 
-const std::vector<AcceleratorEntry>& accelerator_table() {
-    static const std::vector<AcceleratorEntry> table = {
+const NameTable<AcceleratorEntry>& accelerator_table() {
+    static const NameTable<AcceleratorEntry> table = {
         {"bvh", "8-wide SAH bounding volume hierarchy (the default)",
          [](std::span<const Shape* const> shapes) { return std::make_unique<BvhAccelerator>(shapes); }},
 #ifdef GLINT_HAVE_EMBREE
@@ -20,12 +20,8 @@ const std::vector<AcceleratorEntry>& accelerator_table() {
 }
 
 std::unique_ptr<Accelerator> make_accelerator(const std::string& name, std::span<const Shape* const> shapes) {
-    for (const AcceleratorEntry& entry : accelerator_table()) {
-        if (entry.name == name) {
-            return entry.create(shapes);
-        }
-    }
-    return nullptr;
+    const AcceleratorEntry* entry = accelerator_table().find(name);
+    return entry ? entry->create(shapes) : nullptr;
 }
 
 }  // namespace glint

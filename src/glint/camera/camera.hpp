@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "glint/core/ray.hpp"
+#include "glint/params/name_table.hpp"
 
 namespace glint {
 
@@ -55,7 +56,7 @@ struct CameraEntry {
     CameraFactory create;
 };
 // The name → constructor table of cameras ("pinhole", …).
-const std::vector<CameraEntry>& camera_table();
+const NameTable<CameraEntry>& camera_table();
 
 // Where a camera stands and how it is turned: eye, look_at and up (read and checked), and the basis.
 // Shared by every camera.

@@ -7,13 +7,18 @@
 
 namespace glint {
 
-const std::vector<CameraEntry>& camera_table() {
-    static const std::vector<CameraEntry> table = {
-        {"pinhole", &PinholeCamera::create},           {"thin-lens", &ThinLensCamera::create},
-        {"orthographic", &OrthographicCamera::create}, {"spherical", &SphericalCamera::create},
+const NameTable<CameraEntry>& camera_table() {
+    // One entry a line, so that adding a camera is a one-line change.
+    // clang-format off
+    static const NameTable<CameraEntry> table = {
+        {"pinhole", &PinholeCamera::create},  // the first: the camera of a scene that names no type
+        {"thin-lens", &ThinLensCamera::create},
+        {"orthographic", &OrthographicCamera::create},
+        {"spherical", &SphericalCamera::create},
         {"equirectangular", &SphericalCamera::create},  // another name for the same panorama
         {"fisheye", &FisheyeCamera::create},
     };
+    // clang-format on
     return table;
 }
 

@@ -10,6 +10,7 @@
 
 #include "glint/core/bounds.hpp"
 #include "glint/geometry/hit.hpp"
+#include "glint/params/name_table.hpp"
 
 namespace glint {
 
@@ -76,6 +77,6 @@ struct ShapeEntry {
     std::string name;
     ShapeFactory create;
 };
-const std::vector<ShapeEntry>& shape_table();
+const NameTable<ShapeEntry>& shape_table();
 
 }  // namespace glint

@@ -11,10 +11,10 @@
 
 namespace glint {
 
-const std::vector<ShapeEntry>& shape_table() {
+const NameTable<ShapeEntry>& shape_table() {
     // One entry a line, so that adding a shape is a one-line change.
     // clang-format off
-    static const std::vector<ShapeEntry> table = {
+    static const NameTable<ShapeEntry> table = {
         {"sphere", &Sphere::create},
         {"plane", &Plane::create},
         {"disk", &Disk::create},

@@ -9,6 +9,7 @@
 
 #include "glint/core/color.hpp"
 #include "glint/core/ray.hpp"
+#include "glint/params/name_table.hpp"
 #include "glint/sampling/sampler.hpp"
 
 namespace glint {
@@ -48,7 +49,6 @@ struct IntegratorEntry {
     IntegratorFactory create;
 };
 // The name → constructor table of integrators ("raycast", …).
-const std::vector<IntegratorEntry>& integrator_table();
-std::vector<std::string> integrator_names();
+const NameTable<IntegratorEntry>& integrator_table();
 
 }  // namespace glint

@@ -20,8 +20,8 @@ int max_depth(Params& p, const RenderSettings& settings) {
 
 }  // namespace
 
-const std::vector<IntegratorEntry>& integrator_table() {
-    static const std::vector<IntegratorEntry> table = {
+const NameTable<IntegratorEntry>& integrator_table() {
+    static const NameTable<IntegratorEntry> table = {
         {"raycast", "direct light from every light with hard shadows; no reflection",
          [](Params&, const RenderSettings&) { return std::make_unique<RaycastIntegrator>(); }},
         {"whitted", "Whitted: direct light and shadows plus recursive mirror reflection and refraction",
@@ -34,14 +34,6 @@ const std::vector<IntegratorEntry>& integrator_table() {
          }},
     };
     return table;
-}
-
-std::vector<std::string> integrator_names() {
-    std::vector<std::string> names;
-    for (const IntegratorEntry& entry : integrator_table()) {
-        names.push_back(entry.name);
-    }
-    return names;
 }
 
 }  // namespace glint

@@ -2,7 +2,7 @@
 
 #include "glint/image/image_io.hpp"
 #include "glint/params/build_context.hpp"
-#include "glint/params/params.hpp"
+#include "glint/params/name_table.hpp"
 #include "glint/sampling/warps.hpp"
 
 namespace glint {
@@ -129,7 +129,9 @@ std::unique_ptr<Light> EnvironmentLight::create(Params& params, const BuildConte
     const Node* radiance = params.node("radiance");
     if (radiance && radiance->is_map()) {
         Params sky(*radiance, params.what() + ".radiance");
-        sky.choice("type", {"gradient"}, "gradient");
+        enum class Sky { Gradient };  // the computed skies; one so far
+        static const EnumTable<Sky> skies = {{"gradient", Sky::Gradient}};
+        sky.enumeration("type", skies, Sky::Gradient);
         const Rgb bottom = sky.non_negative_color("bottom", Rgb(1.0));
         const Rgb top = sky.non_negative_color("top", Rgb(0.5, 0.7, 1.0));
         sky.finish();

@@ -9,6 +9,7 @@
 
 #include "glint/core/color.hpp"
 #include "glint/geometry/hit.hpp"
+#include "glint/params/name_table.hpp"
 
 namespace glint {
 
@@ -65,6 +66,6 @@ struct LightEntry {
     LightFactory create;
 };
 // The name → constructor table of lights ("ambient", "point", …).
-const std::vector<LightEntry>& light_table();
+const NameTable<LightEntry>& light_table();
 
 }  // namespace glint

@@ -9,8 +9,8 @@
 
 namespace glint {
 
-const std::vector<LightEntry>& light_table() {
-    static const std::vector<LightEntry> table = {
+const NameTable<LightEntry>& light_table() {
+    static const NameTable<LightEntry> table = {
         {"ambient", &AmbientLight::create},
         {"point", &PointLight::create},
         {"spot", &SpotLight::create},

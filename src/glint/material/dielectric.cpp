@@ -8,7 +8,7 @@
 #include "glint/material/dielectric.hpp"
 
 #include "glint/material/fresnel.hpp"
-#include "glint/params/params.hpp"
+#include "glint/params/name_table.hpp"
 
 namespace glint {
 
@@ -58,11 +58,11 @@ std::unique_ptr<Material> Dielectric::create(Params& params, const BuildContext&
         params.fail("ior", "dielectric ior must be at most 10 (glass 1.5, water 1.333, diamond 2.417)");
     }
     const Rgb absorption = params.non_negative_color("absorption", Rgb());
-    const std::string fresnel = params.choice("fresnel", {"exact", "schlick", "schlick-outside"}, "exact");
-    return std::make_unique<Dielectric>(ior, absorption,
-                                        fresnel == "schlick"           ? Fresnel::Schlick
-                                        : fresnel == "schlick-outside" ? Fresnel::SchlickOutside
-                                                                       : Fresnel::Exact);
+    static const EnumTable<Fresnel> fresnel_rules = {{"exact", Fresnel::Exact},
+                                                     {"schlick", Fresnel::Schlick},
+                                                     {"schlick-outside", Fresnel::SchlickOutside}};
+    const Fresnel fresnel = params.enumeration("fresnel", fresnel_rules, Fresnel::Exact);
+    return std::make_unique<Dielectric>(ior, absorption, fresnel);
 }
 
 }  // namespace glint

@@ -21,6 +21,7 @@
 
 #include "glint/core/color.hpp"
 #include "glint/geometry/hit.hpp"
+#include "glint/params/name_table.hpp"
 
 namespace glint {
 
@@ -72,7 +73,7 @@ struct MaterialEntry {
     std::string name;
     MaterialFactory create;
 };
-const std::vector<MaterialEntry>& material_table();
+const NameTable<MaterialEntry>& material_table();
 
 // n flipped, if needed, to the side of v.
 inline Vec3 face_forward(const Vec3& n, const Vec3& v) {

@@ -10,8 +10,8 @@
 
 namespace glint {
 
-const std::vector<MaterialEntry>& material_table() {
-    static const std::vector<MaterialEntry> table = {
+const NameTable<MaterialEntry>& material_table() {
+    static const NameTable<MaterialEntry> table = {
         {"matte", &Matte::create},
         {"phong", &Phong::create},
         {"plastic", &Plastic::create},

@@ -204,16 +204,10 @@ Vec3 Params::direction(const std::string& key, const Vec3& fallback) {
     return has(key) ? direction(key) : fallback;
 }
 
-std::string Params::choice(const std::string& key, const std::vector<std::string>& choices,
-                           const std::string& fallback) {
-    const std::string value = string(key, fallback);
-    for (const std::string& c : choices) {
-        if (c == value) {
-            return value;
-        }
-    }
-    std::string message = what_ + "." + key + " is '" + value + "'";
-    const std::string guess = closest_match(value, choices);
+void Params::fail_choice(const std::string& key, const std::string& word,
+                         const std::vector<std::string>& choices) const {
+    std::string message = what_ + "." + key + " is '" + word + "'";
+    const std::string guess = closest_match(word, choices);
     if (!guess.empty()) {
         message += "; did you mean '" + guess + "'?";
     }

@@ -17,6 +17,9 @@
 
 namespace glint {
 
+template <typename Enum>
+class EnumTable;
+
 class Params {
   public:
     // `what` names the object in messages, e.g. "sphere" or "camera".
@@ -58,9 +61,12 @@ class Params {
     // A vector that is turned into a direction: the zero vector is an error.
     Vec3 direction(const std::string& key);
     Vec3 direction(const std::string& key, const Vec3& fallback);
-    // One of a fixed set of words.
-    std::string choice(const std::string& key, const std::vector<std::string>& choices,
-                       const std::string& fallback);
+    // One of a small enum's words, by its EnumTable (defined, with these two, in params/name_table.hpp).
+    // Any other word is an error at it with a did-you-mean and the list of words.
+    template <typename Enum>
+    Enum enumeration(const std::string& key, const EnumTable<Enum>& table);
+    template <typename Enum>
+    Enum enumeration(const std::string& key, const EnumTable<Enum>& table, Enum fallback);
 
     // The raw node under `key` (marking it read), or nullptr.
     const Node* node(const std::string& key);
@@ -75,6 +81,10 @@ class Params {
 
   private:
     const Node& require(const std::string& key);
+    // The error for `word` under `key` when only `choices` are allowed:
+    //   <what>.<key> is '<word>'; did you mean '<closest>'? (expected one of: a, b, c)
+    [[noreturn]] void fail_choice(const std::string& key, const std::string& word,
+                                  const std::vector<std::string>& choices) const;
 
     const Node* map_;
     std::string what_;

@@ -16,6 +16,7 @@
 
 #include "glint/core/hash.hpp"
 #include "glint/core/vec.hpp"
+#include "glint/params/name_table.hpp"
 
 namespace glint {
 
@@ -64,9 +65,8 @@ struct SamplerEntry {
     std::string summary;
     SamplerFactory create;
 };
-const std::vector<SamplerEntry>& sampler_table();
+const NameTable<SamplerEntry>& sampler_table();
 // nullptr when `name` is not in the table.
 std::unique_ptr<Sampler> make_sampler(const std::string& name, std::uint32_t samples_per_pixel);
-std::vector<std::string> sampler_names();
 
 }  // namespace glint

@@ -11,8 +11,8 @@
 
 namespace glint {
 
-const std::vector<SamplerEntry>& sampler_table() {
-    static const std::vector<SamplerEntry> table = {
+const NameTable<SamplerEntry>& sampler_table() {
+    static const NameTable<SamplerEntry> table = {
         {"regular",
          "the centres of a k×k grid, the same in every pixel; n rounded up to a square (paper §2.1)",
          [](std::uint32_t n) { return std::make_unique<RegularSampler>(n); }},
@@ -37,20 +37,8 @@ const std::vector<SamplerEntry>& sampler_table() {
 }
 
 std::unique_ptr<Sampler> make_sampler(const std::string& name, std::uint32_t samples_per_pixel) {
-    for (const SamplerEntry& entry : sampler_table()) {
-        if (entry.name == name) {
-            return entry.create(samples_per_pixel);
-        }
-    }
-    return nullptr;
-}
-
-std::vector<std::string> sampler_names() {
-    std::vector<std::string> names;
-    for (const SamplerEntry& entry : sampler_table()) {
-        names.push_back(entry.name);
-    }
-    return names;
+    const SamplerEntry* entry = sampler_table().find(name);
+    return entry ? entry->create(samples_per_pixel) : nullptr;
 }
 
 }  // namespace glint

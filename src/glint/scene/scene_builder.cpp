@@ -8,8 +8,8 @@
 #include "glint/light/area.hpp"
 #include "glint/material/matte.hpp"
 #include "glint/params/build_context.hpp"
+#include "glint/params/name_table.hpp"
 #include "glint/params/params.hpp"
-#include "glint/params/table_lookup.hpp"
 #include "glint/sampling/sampler.hpp"
 #include "glint/scene/scene.hpp"
 #include "glint/scene/scene_desc.hpp"
@@ -28,14 +28,6 @@ std::string check_name(const std::string& value, const std::vector<std::string>&
         }
     }
     throw SceneError(pos, unknown_name_message(what, value, names));
-}
-
-std::vector<std::string> accelerator_names() {
-    std::vector<std::string> names;
-    for (const auto& e : accelerator_table()) {
-        names.push_back(e.name);
-    }
-    return names;
 }
 
 // An object without a material is grey matte of this albedo.
@@ -89,8 +81,8 @@ RenderSettings read_render_settings(Params& p) {
     }
     s.samples_per_pixel = static_cast<std::uint32_t>(spp);
     if (p.has("accelerator")) {
-        s.accelerator =
-            check_name(p.string("accelerator"), accelerator_names(), "accelerator", p.pos_of("accelerator"));
+        s.accelerator = check_name(p.string("accelerator"), accelerator_table().names(), "accelerator",
+                                   p.pos_of("accelerator"));
     }
     const std::int64_t depth = p.positive_integer("max_depth", s.max_depth);
     if (depth > kMaxPathDepth) {
@@ -167,7 +159,8 @@ View build_view(const SceneDesc& desc) {
     {
         const Node node = typed("sampler", view.settings.sampler);
         Params p(node, "sampler");
-        const std::string name = check_name(p.string("type"), sampler_names(), "sampler", p.pos_of("type"));
+        const std::string name =
+            check_name(p.string("type"), sampler_table().names(), "sampler", p.pos_of("type"));
         view.settings.sampler = name;
         view.sampler = make_sampler(name, view.settings.samples_per_pixel);
         p.finish();
@@ -175,7 +168,7 @@ View build_view(const SceneDesc& desc) {
     {
         const Node node = typed("integrator", view.settings.integrator);
         Params p(node, "integrator");
-        const IntegratorEntry& entry = lookup_type(integrator_table(), p, "integrator");
+        const IntegratorEntry& entry = integrator_table().lookup_type(p, "integrator");
         Params own(node, entry.name + " integrator");
         own.string("type");
         view.settings.integrator = entry.name;
@@ -192,7 +185,7 @@ View build_view(const SceneDesc& desc) {
     if (!p.has("type")) {
         view.camera = camera_table().front().create(p, context, film);
     } else {
-        view.camera = lookup_type(camera_table(), p, "camera").create(p, context, film);
+        view.camera = camera_table().lookup_type(p, "camera").create(p, context, film);
     }
     p.finish();
     return view;
@@ -205,7 +198,7 @@ std::shared_ptr<const World> build_world(const SceneDesc& desc, WorldCache* cach
     std::string accelerator = RenderSettings{}.accelerator;
     if (const Node* render_node = top.node("render")) {
         if (const Node* name = render_node->is_map() ? render_node->find("accelerator") : nullptr) {
-            accelerator = check_name(node_string(*name, "render.accelerator"), accelerator_names(),
+            accelerator = check_name(node_string(*name, "render.accelerator"), accelerator_table().names(),
                                      "accelerator", name->pos);
         }
     }
@@ -221,7 +214,7 @@ std::shared_ptr<const World> build_world(const SceneDesc& desc, WorldCache* cach
     std::map<std::string, std::uint32_t> material_index;
     const auto build_material = [&](const Node& node, const std::string& what) {
         Params p(node, what);
-        auto material = lookup_type(material_table(), p, "material").create(p, context);
+        auto material = material_table().lookup_type(p, "material").create(p, context);
         p.finish();
         world->materials.push_back(std::move(material));
         return static_cast<std::uint32_t>(world->materials.size() - 1);
@@ -302,7 +295,7 @@ std::shared_ptr<const World> build_world(const SceneDesc& desc, WorldCache* cach
         }
         for (size_t i = 0; i < objects->items.size(); ++i) {
             Params p(objects->items[i], "objects[" + std::to_string(i) + "]");
-            const ShapeEntry& entry = lookup_type(shape_table(), p, "object");
+            const ShapeEntry& entry = shape_table().lookup_type(p, "object");
             Params shape_params(objects->items[i], entry.name);
             shape_params.string("type");
             std::shared_ptr<const Shape> shape = build_shape(shape_params, entry);
@@ -319,7 +312,7 @@ std::shared_ptr<const World> build_world(const SceneDesc& desc, WorldCache* cach
     // {type: area} lights add their shape to the objects, with the light's emitting material.
     std::int32_t next_light_index = -1;
     context.add_object = [&](Params& shape_params, std::unique_ptr<Material> material) {
-        const ShapeEntry& entry = lookup_type(shape_table(), shape_params, "shape");
+        const ShapeEntry& entry = shape_table().lookup_type(shape_params, "shape");
         std::shared_ptr<const Shape> shape = build_shape(shape_params, entry);
         shape_params.finish();
         world->materials.push_back(std::move(material));
@@ -335,7 +328,7 @@ std::shared_ptr<const World> build_world(const SceneDesc& desc, WorldCache* cach
         }
         for (size_t i = 0; i < lights->items.size(); ++i) {
             Params p(lights->items[i], "lights[" + std::to_string(i) + "]");
-            const LightEntry& entry = lookup_type(light_table(), p, "light");
+            const LightEntry& entry = light_table().lookup_type(p, "light");
             Params light_params(lights->items[i], entry.name + " light");
             light_params.string("type");
             next_light_index = static_cast<std::int32_t>(world->lights.size());

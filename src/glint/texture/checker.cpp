@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "glint/params/params.hpp"
+#include "glint/params/name_table.hpp"
 
 namespace glint {
 
@@ -33,7 +33,8 @@ Rgb CheckerTexture::evaluate(const Hit& hit) const {
 }
 
 std::shared_ptr<const Texture> CheckerTexture::create(Params& params, const BuildContext& context) {
-    const Space space = params.choice("space", {"uv", "solid"}, "uv") == "uv" ? Space::Uv : Space::Solid;
+    static const EnumTable<Space> spaces = {{"uv", Space::Uv}, {"solid", Space::Solid}};
+    const Space space = params.enumeration("space", spaces, Space::Uv);
     const double scale = params.positive("scale", space == Space::Uv ? 10.0 : 1.0);
     auto even = read_texture(params, "even", Rgb(0.8), context);
     auto odd = read_texture(params, "odd", Rgb(0.2), context);

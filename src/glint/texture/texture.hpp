@@ -12,6 +12,7 @@
 
 #include "glint/core/color.hpp"
 #include "glint/geometry/hit.hpp"
+#include "glint/params/name_table.hpp"
 
 namespace glint {
 
@@ -46,7 +47,7 @@ struct TextureEntry {
     TextureFactory create;
 };
 // The name → constructor table of textures ("constant", "checker", "image", "noise").
-const std::vector<TextureEntry>& texture_table();
+const NameTable<TextureEntry>& texture_table();
 
 // The colour parameter `key` of `params`: a colour, a texture map, or `fallback` when absent.
 // Negative values are an error at the key's position.

@@ -3,8 +3,8 @@
 #include <algorithm>
 
 #include "glint/params/build_context.hpp"
+#include "glint/params/name_table.hpp"
 #include "glint/params/params.hpp"
-#include "glint/params/table_lookup.hpp"
 #include "glint/texture/checker.hpp"
 #include "glint/texture/image_texture.hpp"
 #include "glint/texture/noise.hpp"
@@ -20,8 +20,8 @@ std::shared_ptr<const Texture> create_constant(Params& params, const BuildContex
 
 }  // namespace
 
-const std::vector<TextureEntry>& texture_table() {
-    static const std::vector<TextureEntry> table = {
+const NameTable<TextureEntry>& texture_table() {
+    static const NameTable<TextureEntry> table = {
         {"constant", &create_constant},
         {"checker", &CheckerTexture::create},
         {"image", &ImageTexture::create},
@@ -39,10 +39,7 @@ std::shared_ptr<const Texture> read_texture(Params& params, const std::string& k
     } else if (!node->is_map()) {
         texture = std::make_shared<ConstantTexture>(node_color(*node, params.what() + "." + key));
     } else {
-        Params texture_params(*node, params.what() + "." + key);
-        const TextureEntry& entry = lookup_type(texture_table(), texture_params, "texture");
-        texture = entry.create(texture_params, context);
-        texture_params.finish();
+        texture = build_object(texture_table(), *node, params.what() + "." + key, "texture", context);
     }
     if (texture->min_value() < 0) {
         params.fail(key, params.what() + "." + key + " must not be negative");
