@@ -19,17 +19,6 @@ namespace glint {
 
 namespace {
 
-// A name checked against a list, for the `render:` keys.
-std::string check_name(const std::string& value, const std::vector<std::string>& names,
-                       const std::string& what, const SourcePos& pos) {
-    for (const std::string& n : names) {
-        if (n == value) {
-            return value;
-        }
-    }
-    throw SceneError(pos, unknown_name_message(what, value, names));
-}
-
 // An object without a material is grey matte of this albedo.
 constexpr double kDefaultAlbedo = 0.8;
 
@@ -81,8 +70,7 @@ RenderSettings read_render_settings(Params& p) {
     }
     s.samples_per_pixel = static_cast<std::uint32_t>(spp);
     if (p.has("accelerator")) {
-        s.accelerator = check_name(p.string("accelerator"), accelerator_table().names(), "accelerator",
-                                   p.pos_of("accelerator"));
+        s.accelerator = accelerator_table().lookup(p, "accelerator", "accelerator").name;
     }
     const std::int64_t depth = p.positive_integer("max_depth", s.max_depth);
     if (depth > kMaxPathDepth) {
@@ -159,8 +147,7 @@ View build_view(const SceneDesc& desc) {
     {
         const Node node = typed("sampler", view.settings.sampler);
         Params p(node, "sampler");
-        const std::string name =
-            check_name(p.string("type"), sampler_table().names(), "sampler", p.pos_of("type"));
+        const std::string name = sampler_table().lookup_type(p, "sampler").name;
         view.settings.sampler = name;
         view.sampler = make_sampler(name, view.settings.samples_per_pixel);
         p.finish();
@@ -168,12 +155,9 @@ View build_view(const SceneDesc& desc) {
     {
         const Node node = typed("integrator", view.settings.integrator);
         Params p(node, "integrator");
-        const IntegratorEntry& entry = integrator_table().lookup_type(p, "integrator");
-        Params own(node, entry.name + " integrator");
-        own.string("type");
-        view.settings.integrator = entry.name;
-        view.integrator = entry.create(own, view.settings);
-        own.finish();
+        view.settings.integrator = integrator_table().lookup_type(p, "integrator").name;
+        view.integrator = build_object(integrator_table(), node, view.settings.integrator + " integrator",
+                                       "integrator", view.settings);
     }
     render.finish();
 
@@ -198,8 +182,9 @@ std::shared_ptr<const World> build_world(const SceneDesc& desc, WorldCache* cach
     std::string accelerator = RenderSettings{}.accelerator;
     if (const Node* render_node = top.node("render")) {
         if (const Node* name = render_node->is_map() ? render_node->find("accelerator") : nullptr) {
-            accelerator = check_name(node_string(*name, "render.accelerator"), accelerator_table().names(),
-                                     "accelerator", name->pos);
+            accelerator = accelerator_table()
+                              .lookup(node_string(*name, "render.accelerator"), "accelerator", name->pos)
+                              .name;
         }
     }
 
@@ -213,10 +198,7 @@ std::shared_ptr<const World> build_world(const SceneDesc& desc, WorldCache* cach
     // Materials: a map from name to {type: …, parameters}.
     std::map<std::string, std::uint32_t> material_index;
     const auto build_material = [&](const Node& node, const std::string& what) {
-        Params p(node, what);
-        auto material = material_table().lookup_type(p, "material").create(p, context);
-        p.finish();
-        world->materials.push_back(std::move(material));
+        world->materials.push_back(build_object(material_table(), node, what, "material", context));
         return static_cast<std::uint32_t>(world->materials.size() - 1);
     };
     if (const Node* materials = top.node("materials")) {
@@ -330,10 +312,8 @@ std::shared_ptr<const World> build_world(const SceneDesc& desc, WorldCache* cach
             Params p(lights->items[i], "lights[" + std::to_string(i) + "]");
             const LightEntry& entry = light_table().lookup_type(p, "light");
             Params light_params(lights->items[i], entry.name + " light");
-            light_params.string("type");
             next_light_index = static_cast<std::int32_t>(world->lights.size());
-            auto light = entry.create(light_params, context);
-            light_params.finish();
+            auto light = build_object(light_table(), light_params, "light", context);
             world->ambient += light->ambient();
             if (light->is_environment()) {
                 if (world->environment) {
