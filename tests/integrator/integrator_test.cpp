@@ -324,11 +324,15 @@ lights: [{type: point, position: [-1, 4, 3], intensity: 20}]
 class DirectOnlyMatte final : public Material {
   public:
     explicit DirectOnlyMatte(double albedo) : albedo_(albedo) {}
-    Rgb evaluate(const Hit& hit, const Vec3& wo, const Vec3& wi) const override {
-        return dot(hit.normal, wo) * dot(hit.normal, wi) > 0 ? Rgb(albedo_ * kInvPi) : Rgb{};
+
+  protected:
+    Rgb evaluate(const MaterialPoint&, const Vec3& wo, const Vec3& wi) const override {
+        return wo.z * wi.z > 0 ? Rgb(albedo_ * kInvPi) : Rgb{};
     }
-    std::optional<BsdfSample> sample(const Hit&, const Vec3&, Point2) const override { return std::nullopt; }
-    double pdf(const Hit&, const Vec3&, const Vec3&) const override { return 0; }
+    std::optional<BsdfSample> sample(const MaterialPoint&, const Vec3&, Point2) const override {
+        return std::nullopt;
+    }
+    double pdf(const MaterialPoint&, const Vec3&, const Vec3&) const override { return 0; }
 
   private:
     double albedo_;

@@ -2,7 +2,6 @@
 // library: a Lambertian surface that also emits, a perfect mirror and a smooth glass.
 #pragma once
 
-#include "glint/core/frame.hpp"
 #include "glint/material/material.hpp"
 
 namespace glint::test {
@@ -11,24 +10,26 @@ namespace glint::test {
 class EmittingMatte final : public Material {
   public:
     EmittingMatte(const Rgb& albedo, const Rgb& emission) : albedo_(albedo), emission_(emission) {}
-    Rgb evaluate(const Hit& hit, const Vec3& wo, const Vec3& wi) const override {
-        return dot(hit.normal, wo) * dot(hit.normal, wi) > 0 ? albedo_ * kInvPi : Rgb{};
+    Rgb emitted(const Hit&, const Vec3&) const override { return emission_; }
+
+  protected:
+    Rgb evaluate(const MaterialPoint&, const Vec3& wo, const Vec3& wi) const override {
+        return wo.z * wi.z > 0 ? albedo_ * kInvPi : Rgb{};
     }
-    std::optional<BsdfSample> sample(const Hit& hit, const Vec3& wo, Point2 u) const override {
+    std::optional<BsdfSample> sample(const MaterialPoint&, const Vec3& wo, Point2 u) const override {
         const double r = std::sqrt(u.x);
         const double phi = 2 * kPi * u.y;
-        const Vec3 local{r * std::cos(phi), r * std::sin(phi), safe_sqrt(1 - u.x)};
-        if (local.z <= 0) {
+        const double z = safe_sqrt(1 - u.x);
+        if (z <= 0) {
             return std::nullopt;
         }
-        const Vec3 wi = Frame::from_normal(face_forward(hit.normal, wo)).to_world(local);
-        return BsdfSample{wi, albedo_ * kInvPi, local.z * kInvPi, false};
+        const Vec3 wi{r * std::cos(phi), r * std::sin(phi), wo.z < 0 ? -z : z};
+        return BsdfSample{wi, albedo_ * kInvPi, z * kInvPi, false};
     }
-    double pdf(const Hit& hit, const Vec3& wo, const Vec3& wi) const override {
-        return dot(hit.normal, wo) * dot(hit.normal, wi) > 0 ? std::abs(dot(hit.normal, wi)) * kInvPi : 0;
+    double pdf(const MaterialPoint&, const Vec3& wo, const Vec3& wi) const override {
+        return wo.z * wi.z > 0 ? std::abs(wi.z) * kInvPi : 0;
     }
-    Rgb ambient_reflectance(const Hit&) const override { return albedo_; }
-    Rgb emitted(const Hit&, const Vec3&) const override { return emission_; }
+    Rgb ambient_reflectance(const MaterialPoint&) const override { return albedo_; }
 
   private:
     Rgb albedo_, emission_;
@@ -36,14 +37,14 @@ class EmittingMatte final : public Material {
 
 // Reflects everything into the mirror direction: f = δ/|cos θ|, pdf 1.
 class PerfectMirror final : public Material {
-  public:
-    Rgb evaluate(const Hit&, const Vec3&, const Vec3&) const override { return {}; }
-    std::optional<BsdfSample> sample(const Hit& hit, const Vec3& wo, Point2) const override {
-        const Vec3 n = face_forward(hit.shading_normal, wo);
+  protected:
+    Rgb evaluate(const MaterialPoint&, const Vec3&, const Vec3&) const override { return {}; }
+    std::optional<BsdfSample> sample(const MaterialPoint&, const Vec3& wo, Point2) const override {
+        const Vec3 n{0, 0, wo.z < 0 ? -1.0 : 1.0};
         const Vec3 wi = reflect(-wo, n);
-        return BsdfSample{wi, Rgb(1.0 / std::abs(dot(n, wi))), 1.0, true};
+        return BsdfSample{wi, Rgb(1.0 / std::abs(wi.z)), 1.0, true};
     }
-    double pdf(const Hit&, const Vec3&, const Vec3&) const override { return 0; }
+    double pdf(const MaterialPoint&, const Vec3&, const Vec3&) const override { return 0; }
 };
 
 // Smooth glass of index η with exact Fresnel reflectance; chooses reflection with probability F
@@ -52,8 +53,6 @@ class PerfectMirror final : public Material {
 class SmoothGlass final : public Material {
   public:
     SmoothGlass(double eta, const Rgb& absorption) : eta_(eta), absorption_(absorption) {}
-    Rgb evaluate(const Hit&, const Vec3&, const Vec3&) const override { return {}; }
-    double pdf(const Hit&, const Vec3&, const Vec3&) const override { return 0; }
     Rgb absorption() const override { return absorption_; }
 
     static double fresnel(double cos_i, double eta) {  // eta = n_t / n_i
@@ -67,9 +66,12 @@ class SmoothGlass final : public Material {
         return 0.5 * (rs * rs + rp * rp);
     }
 
-    std::optional<BsdfSample> sample(const Hit& hit, const Vec3& wo, Point2 u) const override {
-        const bool entering = dot(hit.normal, wo) > 0;
-        const Vec3 n = entering ? hit.normal : -hit.normal;
+  protected:
+    Rgb evaluate(const MaterialPoint&, const Vec3&, const Vec3&) const override { return {}; }
+    double pdf(const MaterialPoint&, const Vec3&, const Vec3&) const override { return 0; }
+    std::optional<BsdfSample> sample(const MaterialPoint&, const Vec3& wo, Point2 u) const override {
+        const bool entering = wo.z > 0;
+        const Vec3 n{0, 0, entering ? 1.0 : -1.0};
         const double eta = entering ? eta_ : 1 / eta_;
         const double cos_i = dot(n, wo);
         const double f = fresnel(cos_i, eta);
@@ -80,7 +82,7 @@ class SmoothGlass final : public Material {
         const double ratio = 1 / eta;  // n_i / n_t
         const double k = 1 - ratio * ratio * (1 - cos_i * cos_i);
         const Vec3 wi = normalize(-wo * ratio + n * (ratio * cos_i - std::sqrt(k)));
-        return BsdfSample{wi, Rgb((1 - f) / std::abs(dot(n, wi))), 1 - f, true};
+        return BsdfSample{wi, Rgb((1 - f) / std::abs(wi.z)), 1 - f, true};
     }
 
   private:

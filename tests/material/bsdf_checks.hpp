@@ -30,6 +30,12 @@ inline Vec3 direction_at(const Hit& hit, double cos_theta, double phi) {
     return Frame::from_normal(hit.shading_normal).to_world({s * std::cos(phi), s * std::sin(phi), cos_theta});
 }
 
+// The mirror direction of wo about the hit's shading normal, in world space as the paper writes it
+// (eq. 16, R = 2(wo·N)N − wo): a reference independent of the shading frame.
+inline Vec3 mirror_direction(const Hit& hit, const Vec3& wo) {
+    return 2 * dot(wo, hit.shading_normal) * hit.shading_normal - wo;
+}
+
 inline Point2 test_point(std::uint64_t seed, std::uint32_t i) {
     const SampleKey key{seed, i, 0, 0};
     return {key.uniform(0), key.uniform(1)};
@@ -57,11 +63,12 @@ inline double chi2_critical(int k, double z) {
 inline Chi2Outcome chi2_test(const Material& material, const Hit& hit, const Vec3& wo, int samples,
                              std::uint64_t seed) {
     constexpr int kCos = 20, kPhi = 40, kSub = 12;
+    const Bsdf bsdf = material.bsdf(hit);
     const Frame frame = Frame::from_normal(hit.shading_normal);
     std::vector<double> observed(kCos * kPhi, 0), expected(kCos * kPhi, 0);
     double other_observed = 0;
     for (int i = 0; i < samples; ++i) {
-        const auto s = material.sample(hit, wo, test_point(seed, static_cast<std::uint32_t>(i)));
+        const auto s = bsdf.sample(wo, test_point(seed, static_cast<std::uint32_t>(i)));
         if (!s || s->delta) {
             ++other_observed;
             continue;
@@ -86,7 +93,7 @@ inline Chi2Outcome chi2_test(const Material& material, const Hit& hit, const Vec
                     const double p = (pi * kSub + b + 0.5) * dp;
                     const double sin_theta = safe_sqrt(1 - c * c);
                     const Vec3 local{sin_theta * std::cos(p), sin_theta * std::sin(p), c};
-                    sum += material.pdf(hit, wo, frame.to_world(local));
+                    sum += bsdf.pdf(wo, frame.to_world(local));
                 }
             }
             expected[ci * kPhi + pi] = sum * dc * dp * samples;
@@ -132,9 +139,10 @@ struct AlbedoEstimate {
 };
 inline AlbedoEstimate estimate_albedo(const Material& material, const Hit& hit, const Vec3& wo, int samples,
                                       std::uint64_t seed) {
+    const Bsdf bsdf = material.bsdf(hit);
     double sum = 0, sum2 = 0;
     for (int i = 0; i < samples; ++i) {
-        const auto s = material.sample(hit, wo, test_point(seed, static_cast<std::uint32_t>(i)));
+        const auto s = bsdf.sample(wo, test_point(seed, static_cast<std::uint32_t>(i)));
         double w = 0;
         if (s && s->pdf > 0) {
             w = (s->f * (std::abs(dot(hit.shading_normal, s->wi)) / s->pdf)).luminance();

@@ -1,11 +1,13 @@
 // Every BSDF against its own contract: sampling distributed as pdf() says (χ²), sample() agreeing with
-// evaluate() and pdf(), energy conservation (white furnace), reciprocity, and both sides of the surface.
+// evaluate() and pdf(), energy conservation (white furnace), reciprocity, both sides of the surface, and
+// the world-space values agreeing with the shading frame's however that frame is turned.
 #include <gtest/gtest.h>
 
 #include <functional>
 #include <memory>
 
 #include "glint/material/dielectric.hpp"
+#include "glint/material/fuzzy_metal.hpp"
 #include "glint/material/matte.hpp"
 #include "glint/material/metal.hpp"
 #include "glint/material/mirror.hpp"
@@ -65,24 +67,25 @@ TEST_P(ScatteringBsdf, SamplingMatchesPdfByChiSquare) {
 TEST_P(ScatteringBsdf, SampleAgreesWithEvaluateAndPdf) {
     const auto material = GetParam().make();
     const Hit hit = test_hit();
+    const Bsdf bsdf = material->bsdf(hit);
     int non_delta = 0;
     for (const double c : kViewCosines) {
         const Vec3 wo = direction_at(hit, c, 2.1);
         for (std::uint32_t i = 0; i < 2000; ++i) {
-            const auto s = material->sample(hit, wo, test_point(5, i));
+            const auto s = bsdf.sample(wo, test_point(5, i));
             if (!s) {
                 continue;
             }
             EXPECT_NEAR(length(s->wi), 1.0, 1e-12);
             if (s->delta) {
-                EXPECT_TRUE(material->evaluate(hit, wo, s->wi).is_black() || GetParam().name == "Plastic");
+                EXPECT_TRUE(bsdf.evaluate(wo, s->wi).is_black() || GetParam().name == "Plastic");
                 continue;
             }
             ++non_delta;
             ASSERT_GT(s->pdf, 0);
-            const double pdf = material->pdf(hit, wo, s->wi);
+            const double pdf = bsdf.pdf(wo, s->wi);
             EXPECT_NEAR(s->pdf, pdf, 1e-9 * pdf);
-            const Rgb f = material->evaluate(hit, wo, s->wi);
+            const Rgb f = bsdf.evaluate(wo, s->wi);
             EXPECT_NEAR(s->f.r, f.r, 1e-9 * f.max_component());
             EXPECT_NEAR(s->f.g, f.g, 1e-9 * f.max_component());
             EXPECT_NEAR(s->f.b, f.b, 1e-9 * f.max_component());
@@ -96,13 +99,14 @@ TEST_P(ScatteringBsdf, SampleAgreesWithEvaluateAndPdf) {
 TEST_P(ScatteringBsdf, IsReciprocal) {
     const auto material = GetParam().make();
     const Hit hit = test_hit();
+    const Bsdf bsdf = material->bsdf(hit);
     int scattering_pairs = 0;
     for (std::uint32_t i = 0; i < 500; ++i) {
         const SampleKey key{3, i, 0, 0};
         const double side = i % 2 == 0 ? 1 : -1;  // both sides of the surface
         const Vec3 a = direction_at(hit, side * (0.02 + 0.98 * key.uniform(0)), 2 * kPi * key.uniform(1));
         const Vec3 b = direction_at(hit, side * (0.02 + 0.98 * key.uniform(2)), 2 * kPi * key.uniform(3));
-        const Rgb fab = material->evaluate(hit, a, b), fba = material->evaluate(hit, b, a);
+        const Rgb fab = bsdf.evaluate(a, b), fba = bsdf.evaluate(b, a);
         const double scale = std::max(1e-300, fab.max_component());
         EXPECT_NEAR(fab.r, fba.r, 1e-9 * scale);
         EXPECT_NEAR(fab.g, fba.g, 1e-9 * scale);
@@ -122,6 +126,78 @@ TEST_P(ScatteringBsdf, ReflectsNoMoreThanItReceives) {
     }
 }
 
+// A rotation by `angle` about the unit `axis` (Rodrigues' formula).
+struct Rotation {
+    Vec3 axis;
+    double angle;
+    Vec3 operator()(const Vec3& v) const {
+        const double c = std::cos(angle), s = std::sin(angle);
+        return v * c + cross(axis, v) * s + axis * (dot(axis, v) * (1 - c));
+    }
+    Vec3 inverse(const Vec3& v) const { return Rotation{axis, -angle}(v); }
+};
+
+// Rotations that take +z to shading normals all around the sphere: tilted, sideways, exactly −z (where
+// the frame construction switches branch) and next to it.
+const Rotation kRotations[] = {
+    {normalize(Vec3{1, 2, 3}), 2.0},      {Vec3{1, 0, 0}, kPi / 2},    {Vec3{1, 0, 0}, kPi},
+    {normalize(Vec3{0.3, -0.2, 1}), 0.7}, {Vec3{0, 1, 0}, kPi - 1e-3}, {normalize(Vec3{-1, 1, 0}), 2.5},
+};
+
+// The hit whose shading frame is the world's axes: there world and local coordinates are the same.
+Hit canonical_hit() {
+    return test_hit(Vec3{0, 0, 1});
+}
+
+TEST(ShadingFrame, TheCanonicalHitsFrameIsTheWorldsAxes) {
+    const Bsdf bsdf = Matte(Rgb(0.5)).bsdf(canonical_hit());
+    EXPECT_EQ(bsdf.frame().s, Vec3(1, 0, 0));
+    EXPECT_EQ(bsdf.frame().t, Vec3(0, 1, 0));
+    EXPECT_EQ(bsdf.frame().n, Vec3(0, 0, 1));
+}
+
+// The same pair of directions relative to the surface, turned with it, gives the same f and pdf: the
+// world-space BSDF at the turned hit against the local one (at the canonical hit). A sample's f and pdf
+// at the turned hit are the canonical ones of its direction turned back.
+TEST_P(ScatteringBsdf, WorldValuesAgreeWithTheLocalFrameForRotatedShadingFrames) {
+    const auto material = GetParam().make();
+    const Bsdf local = material->bsdf(canonical_hit());
+    int nonzero = 0;
+    for (const Rotation& rotation : kRotations) {
+        const Bsdf bsdf = material->bsdf(test_hit(rotation(Vec3{0, 0, 1})));
+        for (std::uint32_t i = 0; i < 400; ++i) {
+            const SampleKey key{21, i, 0, 0};
+            const double side = i % 2 == 0 ? 1 : -1;
+            const Vec3 wo_local =
+                direction_at(canonical_hit(), side * (0.02 + 0.98 * key.uniform(0)), 7 * key.uniform(1));
+            // Mostly on wo's side (reflection); every fourth on the other (where f and pdf are 0).
+            const double wi_side = i % 4 == 3 ? -side : side;
+            const Vec3 wi_local =
+                direction_at(canonical_hit(), wi_side * (0.02 + 0.98 * key.uniform(2)), 7 * key.uniform(3));
+            const Vec3 wo = rotation(wo_local), wi = rotation(wi_local);
+            const Rgb f = bsdf.evaluate(wo, wi), expected = local.evaluate_local(wo_local, wi_local);
+            const double tolerance = 1e-9 * std::max(1.0, expected.max_component());
+            EXPECT_NEAR(f.r, expected.r, tolerance);
+            EXPECT_NEAR(f.g, expected.g, tolerance);
+            EXPECT_NEAR(f.b, expected.b, tolerance);
+            const double pdf = local.pdf_local(wo_local, wi_local);
+            EXPECT_NEAR(bsdf.pdf(wo, wi), pdf, 1e-9 * std::max(1.0, pdf));
+            nonzero += expected.is_black() ? 0 : 1;
+
+            const auto s = bsdf.sample(wo, test_point(22, i));
+            if (!s || s->delta) {
+                continue;
+            }
+            const Vec3 back = rotation.inverse(s->wi);
+            const Rgb f_back = local.evaluate_local(wo_local, back);
+            EXPECT_NEAR(s->f.g, f_back.g, 1e-9 * std::max(1.0, f_back.g));
+            const double pdf_back = local.pdf_local(wo_local, back);
+            EXPECT_NEAR(s->pdf, pdf_back, 1e-9 * std::max(1.0, pdf_back));
+        }
+    }
+    EXPECT_GT(nonzero, 1000) << "the test must compare non-zero values";
+}
+
 INSTANTIATE_TEST_SUITE_P(Material, ScatteringBsdf, ::testing::ValuesIn(scattering_cases()),
                          [](const auto& test_info) { return test_info.param.name; });
 
@@ -138,16 +214,17 @@ TEST(WhiteFurnace, MatteReflectsExactlyAll) {
 TEST(WhiteFurnace, MirrorReflectsExactlyAll) {
     const Mirror mirror(constant(1.0));
     const Hit hit = test_hit();
+    const Bsdf bsdf = mirror.bsdf(hit);
     for (const double c : kViewCosines) {
         const Vec3 wo = direction_at(hit, c, 0.3);
-        const auto s = mirror.sample(hit, wo, {0.5, 0.5});
+        const auto s = bsdf.sample(wo, {0.5, 0.5});
         ASSERT_TRUE(s && s->delta);
         // Paper eq. 16: the angle of reflection equals the angle of incidence, in the plane of incidence.
         EXPECT_NEAR(dot(s->wi, hit.shading_normal), dot(wo, hit.shading_normal), 1e-12);
         EXPECT_NEAR(dot(cross(wo, s->wi), hit.shading_normal), 0, 1e-12);
         EXPECT_NEAR((s->f * (std::abs(dot(hit.shading_normal, s->wi)) / s->pdf)).r, 1.0, 1e-12);
-        EXPECT_EQ(mirror.pdf(hit, wo, s->wi), 0);
-        EXPECT_TRUE(mirror.evaluate(hit, wo, s->wi).is_black());
+        EXPECT_EQ(bsdf.pdf(wo, s->wi), 0);
+        EXPECT_TRUE(bsdf.evaluate(wo, s->wi).is_black());
     }
 }
 
@@ -197,14 +274,51 @@ TEST(DeltaLobes, EvaluateAndPdfAreZeroForEveryDeltaSample) {
     const Metal smooth(constant(0.8), 0.01);
     const Hit hit = test_hit();
     for (const Material* m : std::initializer_list<const Material*>{&glass, &mirror, &smooth}) {
+        const Bsdf bsdf = m->bsdf(hit);
         for (std::uint32_t i = 0; i < 200; ++i) {
             const Vec3 wo = direction_at(hit, i % 2 ? 0.6 : -0.6, 0.01 * i);
-            const auto s = m->sample(hit, wo, test_point(9, i));
+            const auto s = bsdf.sample(wo, test_point(9, i));
             ASSERT_TRUE(s);
             EXPECT_TRUE(s->delta);
-            EXPECT_TRUE(m->evaluate(hit, wo, s->wi).is_black());
-            EXPECT_EQ(m->pdf(hit, wo, s->wi), 0);
+            EXPECT_TRUE(bsdf.evaluate(wo, s->wi).is_black());
+            EXPECT_EQ(bsdf.pdf(wo, s->wi), 0);
         }
+    }
+}
+
+// Delta lobes depend on the normal only (not on the frame's tangents): at a turned hit a sample is the
+// canonical sample turned, with the same f and pdf, for the same random numbers.
+TEST(DeltaLobes, SamplesTurnWithTheShadingFrame) {
+    const Dielectric glass(1.5, Rgb());
+    const Mirror mirror(constant(0.8));
+    const Metal smooth(constant(0.8), 0.01);
+    const FuzzyMetal sharp_fuzzy(constant(0.7), 0);
+    const Plastic plastic(constant(0.5), 1.5);  // its coat, for u.x below the coat's probability
+    for (const Material* m :
+         std::initializer_list<const Material*>{&glass, &mirror, &smooth, &sharp_fuzzy, &plastic}) {
+        const Bsdf local = m->bsdf(canonical_hit());
+        int delta_samples = 0;
+        for (const Rotation& rotation : kRotations) {
+            const Bsdf bsdf = m->bsdf(test_hit(rotation(Vec3{0, 0, 1})));
+            for (std::uint32_t i = 0; i < 100; ++i) {
+                // Outside and inside, some beyond glass's critical angle from inside.
+                const double c = (i % 2 == 0 ? 1 : -1) * (0.05 + 0.9 * i / 100.0);
+                const Vec3 wo_local = direction_at(canonical_hit(), c, 0.37 * i);
+                const Point2 u{i % 3 == 0 ? 0.0 : 0.9999, 0.5};
+                const auto expected = local.sample_local(wo_local, u);
+                const auto s = bsdf.sample(rotation(wo_local), u);
+                ASSERT_EQ(s.has_value(), expected.has_value());
+                if (!s || !expected->delta) {
+                    continue;
+                }
+                ++delta_samples;
+                EXPECT_TRUE(s->delta);
+                EXPECT_LT(length(s->wi - rotation(expected->wi)), 1e-12);
+                EXPECT_NEAR(s->pdf, expected->pdf, 1e-12);
+                EXPECT_NEAR(s->f.g, expected->f.g, 1e-12 * std::max(1.0, expected->f.g));
+            }
+        }
+        EXPECT_GT(delta_samples, 100);
     }
 }
 

@@ -91,7 +91,7 @@ TEST(Dielectric, SplitsReflectionAndTransmissionByFresnel) {
         int reflected = 0;
         const int samples = 20000;
         for (int i = 0; i < samples; ++i) {
-            const auto s = glass.sample(hit, wo, test_point(8, static_cast<std::uint32_t>(i)));
+            const auto s = glass.bsdf(hit).sample(wo, test_point(8, static_cast<std::uint32_t>(i)));
             ASSERT_TRUE(s && s->delta);
             const double cos_i = std::abs(dot(hit.shading_normal, s->wi));
             const double weight = s->f.r * cos_i / s->pdf;
@@ -118,7 +118,7 @@ TEST(Dielectric, ReflectsEverythingPastTheCriticalAngleFromInside) {
     const Hit hit = test_hit();
     const Vec3 wo = direction_at(hit, -std::cos(std::asin(1 / 1.5) + radians(1)), 0.4);
     for (std::uint32_t i = 0; i < 100; ++i) {
-        const auto s = glass.sample(hit, wo, test_point(4, i));
+        const auto s = glass.bsdf(hit).sample(wo, test_point(4, i));
         ASSERT_TRUE(s);
         EXPECT_EQ(s->pdf, 1.0);
         EXPECT_LT(dot(s->wi, hit.shading_normal), 0);  // stays inside
@@ -133,9 +133,10 @@ TEST(Dielectric, RadianceFactorsCancelThroughASlab) {
     const Hit bottom = test_hit(Vec3{0, 0, -1});
     const Vec3 wo = normalize(Vec3{0.6, 0, 0.8});  // towards the camera, above the slab
     // u.x = 0.999…: transmission whenever F < 0.999.
-    const auto in = glass.sample(top, wo, {0.9999, 0});
+    const auto in = glass.bsdf(top).sample(wo, {0.9999, 0});
     ASSERT_TRUE(in);
-    const auto out = glass.sample(bottom, -in->wi, {0.9999, 0});  // wo inside the slab at the bottom face
+    const auto out =
+        glass.bsdf(bottom).sample(-in->wi, {0.9999, 0});  // wo inside the slab at the bottom face
     ASSERT_TRUE(out);
     const double w_in = in->f.r * std::abs(in->wi.z) / in->pdf;
     const double w_out = out->f.r * std::abs(out->wi.z) / out->pdf;
@@ -152,7 +153,7 @@ TEST(Dielectric, BeerTransmittanceThroughASlabFromItsAbsorption) {
     const Rgb sigma = tinted.absorption();
     EXPECT_EQ(sigma, Rgb(0.5, 1.0, 2.0));
     const Hit top = test_hit(Vec3{0, 0, 1});
-    const auto in = tinted.sample(top, normalize(Vec3{1, 0, 1}), {0.9999, 0});
+    const auto in = tinted.bsdf(top).sample(normalize(Vec3{1, 0, 1}), {0.9999, 0});
     ASSERT_TRUE(in);
     const double thickness = 2;
     const double distance = thickness / std::abs(in->wi.z);

@@ -41,7 +41,7 @@ materials:
     EXPECT_EQ(scene.world->materials[6]->absorption(), Rgb(0.1, 0.2, 0.3));
     EXPECT_EQ(scene.world->materials[7]->emitted(hit, -hit.normal), Rgb(4, 3.6, 3.2));  // two-sided
     // The checker albedo reaches the matte surface: ambient reflectance is the texture's value.
-    const Rgb albedo = scene.world->materials[0]->ambient_reflectance(hit);
+    const Rgb albedo = scene.world->materials[0]->bsdf(hit).ambient_reflectance();
     EXPECT_TRUE(albedo == Rgb(0.9) || albedo == Rgb(0.1, 0.2, 0.3));
 }
 

@@ -16,9 +16,10 @@ bool shadowed(const World& world, const Hit& hit, const LightSample& ls, RayCoun
                        : world.occluded(spawn_ray_to(hit, ls.position), kShadowRayEnd);
 }
 
-Rgb direct_lighting(const World& world, const Hit& hit, const Material& material, const Vec3& wo,
+Rgb direct_lighting(const World& world, const Hit& hit, const Bsdf& bsdf, const Vec3& wo,
                     SampleStream& samples, RayCounters& rays) {
-    Rgb radiance = material.ambient_reflectance(hit) * world.ambient;
+    const Rgb ambient_reflectance = bsdf.ambient_reflectance();
+    Rgb radiance = ambient_reflectance * world.ambient;
     const Hit at = facing(hit, wo);
     const Vec3& n = at.shading_normal;
     for (const auto& light : world.lights) {
@@ -31,7 +32,7 @@ Rgb direct_lighting(const World& world, const Hit& hit, const Material& material
                 continue;
             }
             if (ls->ambient) {  // an ambient-occlusion probe: the ambient term, if unblocked
-                const Rgb reflected = material.ambient_reflectance(hit) * ls->radiance;
+                const Rgb reflected = ambient_reflectance * ls->radiance;
                 if (!reflected.is_black() && !shadowed(world, at, *ls, rays)) {
                     sum += reflected;
                 }
@@ -41,7 +42,7 @@ Rgb direct_lighting(const World& world, const Hit& hit, const Material& material
             if (cos_theta <= 0) {
                 continue;
             }
-            const Rgb f = material.evaluate(hit, wo, ls->wi);
+            const Rgb f = bsdf.evaluate(wo, ls->wi);
             if (f.is_black()) {
                 continue;
             }

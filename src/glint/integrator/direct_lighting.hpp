@@ -7,7 +7,7 @@
 
 namespace glint {
 
-class Material;
+class Bsdf;
 
 // A shadow ray stops this short of the light's point, so the light's own surface (for lights with one)
 // does not shadow itself; relative, so it holds at any scene scale.
@@ -19,11 +19,11 @@ Hit facing(const Hit& hit, const Vec3& wo);
 // Whether something blocks the shadow ray from `hit` to the light sample (counted in `rays`).
 bool shadowed(const World& world, const Hit& hit, const LightSample& ls, RayCounters& rays);
 
-// Light reflected towards wo at `hit` straight from the scene's lights: the ambient term plus, for
-// each light, the mean of light.samples() samples of f · L · cos θ / pdf, each with a shadow ray
+// Light reflected towards wo at `hit`, of BSDF `bsdf`, straight from the scene's lights: the ambient term
+// plus, for each light, the mean of light.samples() samples of f · L · cos θ / pdf, each with a shadow ray
 // (paper §VI–VII); ambient-occlusion probes add the ambient term where unblocked. Shared by the
 // integrators that shade with direct light.
-Rgb direct_lighting(const World& world, const Hit& hit, const Material& material, const Vec3& wo,
+Rgb direct_lighting(const World& world, const Hit& hit, const Bsdf& bsdf, const Vec3& wo,
                     SampleStream& samples, RayCounters& rays);
 
 }  // namespace glint

@@ -52,6 +52,8 @@ Rgb PathIntegrator::radiance(const World& world, const Ray& camera_ray, SampleSt
             break;
         }
 
+        const Bsdf bsdf = material.bsdf(hit);  // the textures, looked up once for all that follows
+
         // Next-event estimation: one sample of each light.
         const Hit at = facing(hit, wo);
         for (const auto& light : world.lights) {
@@ -63,19 +65,19 @@ Rgb PathIntegrator::radiance(const World& world, const Ray& camera_ray, SampleSt
             if (!ls || ls->radiance.is_black() || ls->pdf <= 0) {
                 continue;
             }
-            const Rgb f = material.evaluate(hit, wo, ls->wi);
+            const Rgb f = bsdf.evaluate(wo, ls->wi);
             const double cos_theta = std::abs(dot(at.shading_normal, ls->wi));
             if (f.is_black() || cos_theta == 0) {
                 continue;
             }
-            const double weight = ls->delta ? 1.0 : power_heuristic(ls->pdf, material.pdf(hit, wo, ls->wi));
+            const double weight = ls->delta ? 1.0 : power_heuristic(ls->pdf, bsdf.pdf(wo, ls->wi));
             if (weight > 0 && !shadowed(world, at, *ls, rays)) {
                 radiance += throughput * f * ls->radiance * (cos_theta * weight / ls->pdf);
             }
         }
 
         // Continue the path by sampling the BSDF.
-        const std::optional<BsdfSample> s = material.sample(hit, wo, samples.next_2d());
+        const std::optional<BsdfSample> s = bsdf.sample(wo, samples.next_2d());
         if (!s || s->pdf <= 0 || s->f.is_black()) {
             break;
         }

@@ -14,7 +14,7 @@ Rgb RaycastIntegrator::radiance(const World& world, const Ray& ray, SampleStream
     }
     const Material& material = world.material(hit);
     const Vec3 wo = normalize(-ray.direction);
-    return material.emitted(hit, wo) + direct_lighting(world, hit, material, wo, samples, rays);
+    return material.emitted(hit, wo) + direct_lighting(world, hit, material.bsdf(hit), wo, samples, rays);
 }
 
 }  // namespace glint

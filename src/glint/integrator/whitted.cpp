@@ -46,8 +46,9 @@ Rgb WhittedIntegrator::radiance(const World& world, const Ray& camera_ray, Sampl
         const Material& material = world.material(hit);
         const Vec3 wo = normalize(-ray.direction);
         const Rgb throughput = branch.throughput * segment_transmittance(material, hit, ray);
-        radiance += throughput *
-                    (material.emitted(hit, wo) + direct_lighting(world, hit, material, wo, samples, rays));
+        const Bsdf bsdf = material.bsdf(hit);  // the textures, looked up once for all that follows
+        radiance +=
+            throughput * (material.emitted(hit, wo) + direct_lighting(world, hit, bsdf, wo, samples, rays));
         if (branch.depth >= max_depth_) {
             continue;
         }
@@ -55,8 +56,8 @@ Rgb WhittedIntegrator::radiance(const World& world, const Ray& camera_ray, Sampl
         // choosing it, so f·|cos| is that lobe's share of the light (the Fresnel reflectance R for
         // reflection, 1 − R for refraction). Asking with u.x at both ends of [0, 1) finds both
         // lobes of a dielectric, which are then both traced: Whitted's deterministic split.
-        const std::optional<BsdfSample> first = material.sample(hit, wo, {0.0, 0.5});
-        const std::optional<BsdfSample> second = material.sample(hit, wo, {1.0 - 0x1p-53, 0.5});
+        const std::optional<BsdfSample> first = bsdf.sample(wo, {0.0, 0.5});
+        const std::optional<BsdfSample> second = bsdf.sample(wo, {1.0 - 0x1p-53, 0.5});
         // Branches to follow, at most two, in the order they are traced.
         std::array<Branch, 2> next;
         int count = 0;
@@ -77,7 +78,7 @@ Rgb WhittedIntegrator::radiance(const World& world, const Ray& camera_ray, Sampl
         } else if ((first && first->delta) || (second && second->delta)) {
             // One delta lobe (a mirror, total internal reflection), or a material that chooses its
             // lobe otherwise: one sample with the path's own random numbers, weighted f·|cos|/pdf.
-            const std::optional<BsdfSample> s = material.sample(hit, wo, samples.next_2d());
+            const std::optional<BsdfSample> s = bsdf.sample(wo, samples.next_2d());
             if (s && s->delta && s->pdf > 0) {
                 follow(*s, s->f * (std::abs(dot(hit.shading_normal, s->wi)) / s->pdf));
             }

@@ -39,12 +39,16 @@ class AreaLight final : public Light {
 class AreaEmitter final : public Material {
   public:
     AreaEmitter(const Rgb& radiance, bool two_sided) : radiance_(radiance), two_sided_(two_sided) {}
-    Rgb evaluate(const Hit&, const Vec3&, const Vec3&) const override { return {}; }
-    std::optional<BsdfSample> sample(const Hit&, const Vec3&, Point2) const override { return std::nullopt; }
-    double pdf(const Hit&, const Vec3&, const Vec3&) const override { return 0; }
     Rgb emitted(const Hit& hit, const Vec3& wo) const override {
         return two_sided_ || dot(hit.normal, wo) > 0 ? radiance_ : Rgb{};
     }
+
+  protected:
+    Rgb evaluate(const MaterialPoint&, const Vec3&, const Vec3&) const override { return {}; }
+    std::optional<BsdfSample> sample(const MaterialPoint&, const Vec3&, Point2) const override {
+        return std::nullopt;
+    }
+    double pdf(const MaterialPoint&, const Vec3&, const Vec3&) const override { return 0; }
 
   private:
     Rgb radiance_;

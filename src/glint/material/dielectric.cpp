@@ -12,16 +12,15 @@
 
 namespace glint {
 
-std::optional<BsdfSample> Dielectric::sample(const Hit& hit, const Vec3& wo, Point2 u) const {
-    const double cos_o = dot(hit.shading_normal, wo);
-    if (cos_o == 0) {
+std::optional<BsdfSample> Dielectric::sample(const MaterialPoint&, const Vec3& wo, Point2 u) const {
+    if (wo.z == 0) {
         return std::nullopt;
     }
-    const bool outside = cos_o > 0;          // wo on the side the normal points to
+    const bool outside = wo.z > 0;           // wo on the side the normal points to
     const double n1 = outside ? 1.0 : ior_;  // index on wo's side
     const double n2 = outside ? ior_ : 1.0;  // index on the other side
-    const Vec3 n = outside ? hit.shading_normal : -hit.shading_normal;
-    const double c1 = std::abs(cos_o);
+    const Vec3 n{0, 0, outside ? 1.0 : -1.0};
+    const double c1 = std::abs(wo.z);
     const std::optional<Vec3> refracted = refract(-wo, n, n1, n2);
     double reflectance = 1;  // total internal reflection
     if (refracted) {
@@ -33,18 +32,17 @@ std::optional<BsdfSample> Dielectric::sample(const Hit& hit, const Vec3& wo, Poi
                 reflectance = schlick(c1, fresnel_r0(n1, n2));
                 break;
             case Fresnel::SchlickOutside: {
-                const double cos_outside = outside ? c1 : std::abs(dot(n, normalize(*refracted)));
+                const double cos_outside = outside ? c1 : std::abs(normalize(*refracted).z);
                 reflectance = schlick(cos_outside, fresnel_r0(n1, n2));
                 break;
             }
         }
     }
     if (u.x < reflectance) {
-        const Vec3 wi = 2 * c1 * n - wo;
-        return BsdfSample{wi, Rgb(reflectance / c1), reflectance, true};
+        return BsdfSample{mirror_local(wo), Rgb(reflectance / c1), reflectance, true};
     }
     const Vec3 wi = normalize(*refracted);
-    const double cos_i = std::abs(dot(hit.shading_normal, wi));
+    const double cos_i = std::abs(wi.z);
     if (cos_i <= 0) {
         return std::nullopt;
     }

@@ -27,12 +27,14 @@ class Dielectric final : public Material {
     enum class Fresnel { Exact, Schlick, SchlickOutside };
     Dielectric(double ior, const Rgb& absorption, Fresnel fresnel = Fresnel::Exact)
         : ior_(ior), absorption_(absorption), fresnel_(fresnel) {}
-    Rgb evaluate(const Hit&, const Vec3&, const Vec3&) const override { return {}; }
-    std::optional<BsdfSample> sample(const Hit& hit, const Vec3& wo, Point2 u) const override;
-    double pdf(const Hit&, const Vec3&, const Vec3&) const override { return 0; }
     Rgb absorption() const override { return absorption_; }
 
     static std::unique_ptr<Material> create(Params& params, const BuildContext& context);
+
+  protected:
+    Rgb evaluate(const MaterialPoint&, const Vec3&, const Vec3&) const override { return {}; }
+    std::optional<BsdfSample> sample(const MaterialPoint& point, const Vec3& wo, Point2 u) const override;
+    double pdf(const MaterialPoint&, const Vec3&, const Vec3&) const override { return 0; }
 
   private:
     double ior_;

@@ -14,12 +14,16 @@ class Emissive final : public Material {
   public:
     Emissive(std::shared_ptr<const Texture> radiance, double scale, bool two_sided)
         : radiance_(std::move(radiance)), scale_(scale), two_sided_(two_sided) {}
-    Rgb evaluate(const Hit&, const Vec3&, const Vec3&) const override { return {}; }
-    std::optional<BsdfSample> sample(const Hit&, const Vec3&, Point2) const override { return std::nullopt; }
-    double pdf(const Hit&, const Vec3&, const Vec3&) const override { return 0; }
     Rgb emitted(const Hit& hit, const Vec3& wo) const override;
 
     static std::unique_ptr<Material> create(Params& params, const BuildContext& context);
+
+  protected:
+    Rgb evaluate(const MaterialPoint&, const Vec3&, const Vec3&) const override { return {}; }
+    std::optional<BsdfSample> sample(const MaterialPoint&, const Vec3&, Point2) const override {
+        return std::nullopt;
+    }
+    double pdf(const MaterialPoint&, const Vec3&, const Vec3&) const override { return 0; }
 
   private:
     std::shared_ptr<const Texture> radiance_;

@@ -4,17 +4,15 @@
 //           perfect mirror of reflectance albedo).
 #include "glint/material/fuzzy_metal.hpp"
 
-#include "glint/material/mirror.hpp"
 #include "glint/params/params.hpp"
 
 namespace glint {
 
-std::optional<BsdfSample> FuzzyMetal::sample(const Hit& hit, const Vec3& wo, Point2 u) const {
-    const Vec3 n = face_forward(hit.shading_normal, wo);  // the book's front-face normal
-    if (dot(n, wo) <= 0) {
+std::optional<BsdfSample> FuzzyMetal::sample(const MaterialPoint& point, const Vec3& wo, Point2 u) const {
+    if (wo.z == 0) {
         return std::nullopt;
     }
-    Vec3 scattered = mirror_direction(hit, wo);
+    Vec3 scattered = mirror_local(wo);
     if (fuzz_ > 0) {
         // A uniform point on the unit sphere (the book's random_unit_vector): z uniform in [−1, 1].
         const double z = 1 - 2 * u.x;
@@ -22,12 +20,10 @@ std::optional<BsdfSample> FuzzyMetal::sample(const Hit& hit, const Vec3& wo, Poi
         const double phi = 2 * kPi * u.y;
         scattered = normalize(scattered + fuzz_ * Vec3{r * std::cos(phi), r * std::sin(phi), z});
     }
-    const double cos_i = dot(n, scattered);
-    if (!(cos_i > 0)) {
-        return std::nullopt;  // perturbed below the surface: absorbed, as in the book
+    if (!same_hemisphere(wo, scattered)) {
+        return std::nullopt;  // perturbed below the surface (the book's front-face normal): absorbed
     }
-    return BsdfSample{scattered, albedo_->evaluate(hit) / std::abs(dot(hit.shading_normal, scattered)), 1.0,
-                      true};
+    return BsdfSample{scattered, point.specular / std::abs(scattered.z), 1.0, true};
 }
 
 std::unique_ptr<Material> FuzzyMetal::create(Params& params, const BuildContext& context) {

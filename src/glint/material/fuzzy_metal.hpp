@@ -19,16 +19,22 @@ namespace glint {
 // weight albedo). Integrators therefore never light-sample it nor weight it by MIS; light reaches it only
 // through sample(). That is exactly the book's estimator, whose only light is the sky that escaping
 // BSDF-sampled rays see; under small lights it would converge (to the same image) but slowly.
+// The random point is drawn in the shading frame's axes (the book's are the world's: the same
+// distribution, as a uniform point on the sphere has no preferred axes). Looks up the albedo into
+// MaterialPoint::specular.
 class FuzzyMetal final : public Material {
   public:
     FuzzyMetal(std::shared_ptr<const Texture> albedo, double fuzz)
         : albedo_(std::move(albedo)), fuzz_(fuzz) {}
-    Rgb evaluate(const Hit&, const Vec3&, const Vec3&) const override { return {}; }
-    std::optional<BsdfSample> sample(const Hit& hit, const Vec3& wo, Point2 u) const override;
-    double pdf(const Hit&, const Vec3&, const Vec3&) const override { return 0; }
     bool random_delta_direction() const override { return fuzz_ > 0; }
 
     static std::unique_ptr<Material> create(Params& params, const BuildContext& context);
+
+  protected:
+    MaterialPoint look_up(const Hit& hit) const override { return {{}, albedo_->evaluate(hit)}; }
+    Rgb evaluate(const MaterialPoint&, const Vec3&, const Vec3&) const override { return {}; }
+    std::optional<BsdfSample> sample(const MaterialPoint& point, const Vec3& wo, Point2 u) const override;
+    double pdf(const MaterialPoint&, const Vec3&, const Vec3&) const override { return 0; }
 
   private:
     std::shared_ptr<const Texture> albedo_;

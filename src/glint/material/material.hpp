@@ -1,9 +1,17 @@
-// Materials: how a surface scatters light (paper §VI, VIII). Every material provides evaluate, sample
-// and pdf of its BSDF, which must agree (the tests check it).
+// Materials: how a surface scatters light (paper §VI, VIII).
 //
-// Directions are world-space unit vectors pointing away from the surface: `wo` towards the viewer,
-// `wi` towards the light. f(wo, wi) excludes the cosine factor. Either may lie on either side of the
-// surface (hit.normal points out of closed shapes; a ray inside glass sees wo below it).
+// A material is evaluated once per hit into a Bsdf (pbrt-v4's Material::GetBSDF, Yocto/GL's
+// eval_material then eval_bsdf): Material::bsdf(hit) looks the material's textures up once, into a
+// MaterialPoint, and pairs them with the shading frame at the hit. The Bsdf's evaluate, sample, pdf
+// and ambient_reflectance then read no texture, however often an integrator asks at that hit
+// (next-event estimation, its MIS weight, the next bounce, Whitted's lobe probes). Each material
+// writes evaluate, sample and pdf, which must agree (the tests check it).
+//
+// Directions point away from the surface: `wo` towards the viewer, `wi` towards the light. f(wo, wi)
+// excludes the cosine factor. Either may lie on either side of the surface (hit.normal points out of
+// closed shapes; a ray inside glass sees wo below it). The Bsdf takes and returns world-space unit
+// vectors and turns them once into the shading frame, in which materials write their lobes: z is the
+// shading normal, not turned towards wo, so cos θ = w.z, and w.z < 0 below the surface.
 //
 // A sample's path weight is f · |cos θi| / pdf with cos θi = dot(hit.shading_normal, wi) (absolute:
 // transmitted directions lie on the other side). For delta lobes (mirror, smooth glass, the coat of
@@ -20,6 +28,7 @@
 #include <vector>
 
 #include "glint/core/color.hpp"
+#include "glint/core/frame.hpp"
 #include "glint/geometry/hit.hpp"
 #include "glint/params/name_table.hpp"
 
@@ -27,6 +36,7 @@ namespace glint {
 
 class Params;
 struct BuildContext;
+class Bsdf;
 
 struct BsdfSample {
     Vec3 wi;
@@ -35,18 +45,24 @@ struct BsdfSample {
     bool delta = false;  // a mirror or refraction direction: f and pdf are Dirac weights
 };
 
+// What a material's textures give at one hit (Yocto/GL's material_point): the parameters of its BSDF
+// that vary over the surface, looked up once. Each material says which fields it fills; the others stay
+// black. A small fixed struct rather than a variant of per-material lobe types: every Material
+// subclass, the tests' stand-ins included, writes its own lobes with no central list to extend, and the
+// Bsdf stays a plain value (no allocation per hit).
+struct MaterialPoint {
+    Rgb diffuse;   // reflectance of a diffuse part: matte albedo, phong kd, the base of plastic
+    Rgb specular;  // reflectance of a specular or glossy part: phong ks, mirror kr, metal F₀, fuzzy albedo
+};
+
 class Material {
   public:
     virtual ~Material() = default;
 
-    virtual Rgb evaluate(const Hit& hit, const Vec3& wo, const Vec3& wi) const = 0;
-    virtual std::optional<BsdfSample> sample(const Hit& hit, const Vec3& wo, Point2 u) const = 0;
-    virtual double pdf(const Hit& hit, const Vec3& wo, const Vec3& wi) const = 0;
+    // The BSDF at `hit`: the textures looked up once, in the shading frame about hit.shading_normal.
+    Bsdf bsdf(const Hit& hit) const;
 
-    // Reflectance under uniform light: what an ambient light of radiance L adds to the surface is
-    // ambient_reflectance · L (for Lambert, ρ: ∫ ρ/π · L cos θ dω = ρ·L).
-    virtual Rgb ambient_reflectance(const Hit&) const { return {}; }
-    // Radiance the surface emits towards wo.
+    // Radiance the surface emits towards wo (world space).
     virtual Rgb emitted(const Hit&, const Vec3&) const { return {}; }
 
     // Absorption coefficient σ (per scene unit, per channel) of the medium this material encloses:
@@ -60,7 +76,65 @@ class Material {
     // Tracing in One Weekend's fuzzy metal: no density to evaluate, so integrators treat it as a delta
     // lobe). Whitted must then follow one random sample instead of splitting into each delta lobe.
     virtual bool random_delta_direction() const { return false; }
+
+  protected:
+    friend class Bsdf;
+
+    // The textures at `hit`; bsdf() calls it once per hit.
+    virtual MaterialPoint look_up(const Hit&) const { return {}; }
+
+    // The BSDF in the local shading frame (z the shading normal, cos θ = w.z), at a looked-up point.
+    virtual Rgb evaluate(const MaterialPoint& point, const Vec3& wo, const Vec3& wi) const = 0;
+    virtual std::optional<BsdfSample> sample(const MaterialPoint& point, const Vec3& wo, Point2 u) const = 0;
+    virtual double pdf(const MaterialPoint& point, const Vec3& wo, const Vec3& wi) const = 0;
+
+    // Reflectance under uniform light: what an ambient light of radiance L adds to the surface is
+    // ambient_reflectance · L (for Lambert, ρ: ∫ ρ/π · L cos θ dω = ρ·L).
+    virtual Rgb ambient_reflectance(const MaterialPoint&) const { return {}; }
 };
+
+// A material's BSDF at one hit: the material, its looked-up textures and the shading frame. A small
+// value made per hit and used there (it refers to its material, which outlives it).
+class Bsdf {
+  public:
+    Bsdf(const Material& material, const Frame& frame, const MaterialPoint& point)
+        : material_(&material), frame_(frame), point_(point) {}
+
+    // World space: wo and wi are turned into the shading frame once per call, a sample's wi back.
+    Rgb evaluate(const Vec3& wo, const Vec3& wi) const {
+        return evaluate_local(frame_.to_local(wo), frame_.to_local(wi));
+    }
+    std::optional<BsdfSample> sample(const Vec3& wo, Point2 u) const {
+        std::optional<BsdfSample> s = sample_local(frame_.to_local(wo), u);
+        if (s) {
+            s->wi = frame_.to_world(s->wi);
+        }
+        return s;
+    }
+    double pdf(const Vec3& wo, const Vec3& wi) const {
+        return pdf_local(frame_.to_local(wo), frame_.to_local(wi));
+    }
+    // Reflectance under uniform light (see Material::ambient_reflectance).
+    Rgb ambient_reflectance() const { return material_->ambient_reflectance(point_); }
+
+    // The same in the shading frame: z is the shading normal.
+    Rgb evaluate_local(const Vec3& wo, const Vec3& wi) const { return material_->evaluate(point_, wo, wi); }
+    std::optional<BsdfSample> sample_local(const Vec3& wo, Point2 u) const {
+        return material_->sample(point_, wo, u);
+    }
+    double pdf_local(const Vec3& wo, const Vec3& wi) const { return material_->pdf(point_, wo, wi); }
+
+    const Frame& frame() const { return frame_; }
+
+  private:
+    const Material* material_;
+    Frame frame_;
+    MaterialPoint point_;
+};
+
+inline Bsdf Material::bsdf(const Hit& hit) const {
+    return Bsdf(*this, Frame::from_normal(hit.shading_normal), look_up(hit));
+}
 
 // Beer–Lambert transmittance exp(−σ d) per channel after a distance d through a medium of absorption σ.
 inline Rgb beer_transmittance(const Rgb& sigma, double distance) {
@@ -80,9 +154,22 @@ inline Vec3 face_forward(const Vec3& n, const Vec3& v) {
     return dot(n, v) < 0 ? -n : n;
 }
 
-// wo and wi strictly on the same side of the shading surface: a reflection, not a transmission.
-inline bool same_hemisphere(const Hit& hit, const Vec3& wo, const Vec3& wi) {
-    return dot(hit.shading_normal, wo) * dot(hit.shading_normal, wi) > 0;
+// Helpers for lobes in the shading frame (z the shading normal).
+
+// wo and wi strictly on the same side of the surface: a reflection, not a transmission.
+inline bool same_hemisphere(const Vec3& wo, const Vec3& wi) {
+    return wo.z * wi.z > 0;
+}
+
+// The mirror direction of wo about the shading normal, on either side: R = 2(wo·N)N − wo.
+inline Vec3 mirror_local(const Vec3& wo) {
+    return {-wo.x, -wo.y, wo.z};
+}
+
+// w with its z negated when side < 0: the surface seen from its other side. A two-sided lobe written for
+// wo above the surface serves wo below through flip_if_below(wo, wo.z) and flip_if_below(wi, wo.z).
+inline Vec3 flip_if_below(const Vec3& w, double side) {
+    return side < 0 ? Vec3{w.x, w.y, -w.z} : w;
 }
 
 // A cosine-weighted direction about +z (Malley's method: a uniform disk point lifted to the hemisphere);

@@ -5,9 +5,7 @@
 //                very rough (1), though RTIOW's fuzz is a random offset and not a microfacet model.
 #include "glint/material/metal.hpp"
 
-#include "glint/core/frame.hpp"
 #include "glint/material/fresnel.hpp"
-#include "glint/material/mirror.hpp"
 #include "glint/params/params.hpp"
 
 namespace glint {
@@ -24,42 +22,38 @@ double Metal::lambda(double cos_theta) const {
     return 0.5 * (std::sqrt(1 + alpha_ * alpha_ * tan2) - 1);
 }
 
-Rgb Metal::evaluate(const Hit& hit, const Vec3& wo, const Vec3& wi) const {
-    if (is_mirror() || !same_hemisphere(hit, wo, wi)) {
+// Both lobe directions on the same side, either side: the normal on wo's side is (0, 0, ±1), so the
+// cosines are |z| and the half vector's cosine |h.z| (h lies on their side too).
+Rgb Metal::evaluate(const MaterialPoint& point, const Vec3& wo, const Vec3& wi) const {
+    if (is_mirror() || !same_hemisphere(wo, wi)) {
         return {};
     }
-    const Vec3 n = face_forward(hit.shading_normal, wo);
-    const double cos_o = dot(n, wo), cos_i = dot(n, wi);
+    const double cos_o = std::abs(wo.z), cos_i = std::abs(wi.z);
     const Vec3 h = normalize(wo + wi);
     const double g = 1 / (1 + lambda(cos_o) + lambda(cos_i));
-    return schlick(dot(wo, h), reflectance_->evaluate(hit)) *
-           (distribution(dot(n, h)) * g / (4 * cos_o * cos_i));
+    return schlick(dot(wo, h), point.specular) * (distribution(std::abs(h.z)) * g / (4 * cos_o * cos_i));
 }
 
-double Metal::pdf(const Hit& hit, const Vec3& wo, const Vec3& wi) const {
-    if (is_mirror() || !same_hemisphere(hit, wo, wi)) {
+double Metal::pdf(const MaterialPoint&, const Vec3& wo, const Vec3& wi) const {
+    if (is_mirror() || !same_hemisphere(wo, wi)) {
         return 0;
     }
-    const Vec3 n = face_forward(hit.shading_normal, wo);
-    const double cos_o = dot(n, wo);
+    const double cos_o = std::abs(wo.z);
     const Vec3 h = normalize(wo + wi);
-    return distribution(dot(n, h)) / ((1 + lambda(cos_o)) * 4 * cos_o);
+    return distribution(std::abs(h.z)) / ((1 + lambda(cos_o)) * 4 * cos_o);
 }
 
-std::optional<BsdfSample> Metal::sample(const Hit& hit, const Vec3& wo, Point2 u) const {
-    const Vec3 n = face_forward(hit.shading_normal, wo);
-    const double cos_o = dot(n, wo);
+std::optional<BsdfSample> Metal::sample(const MaterialPoint& point, const Vec3& wo, Point2 u) const {
+    const double cos_o = std::abs(wo.z);
     if (cos_o <= 0) {
         return std::nullopt;
     }
     if (is_mirror()) {
-        return BsdfSample{mirror_direction(hit, wo), schlick(cos_o, reflectance_->evaluate(hit)) / cos_o, 1.0,
-                          true};
+        return BsdfSample{mirror_local(wo), schlick(cos_o, point.specular) / cos_o, 1.0, true};
     }
-    // Visible normals (Heitz 2018): stretch wo to the unit-roughness configuration, sample the projected
-    // hemisphere seen from it, and unstretch the normal.
-    const Frame frame = Frame::from_normal(n);
-    const Vec3 o = frame.to_local(wo);
+    // Visible normals (Heitz 2018), with wo turned above the surface: stretch wo to the unit-roughness
+    // configuration, sample the projected hemisphere seen from it, and unstretch the normal.
+    const Vec3 o = flip_if_below(wo, wo.z);
     const Vec3 vh = normalize(Vec3{alpha_ * o.x, alpha_ * o.y, o.z});
     const double len2 = vh.x * vh.x + vh.y * vh.y;
     const Vec3 t1 = len2 > 0 ? Vec3{-vh.y, vh.x, 0} / std::sqrt(len2) : Vec3{1, 0, 0};
@@ -71,12 +65,12 @@ std::optional<BsdfSample> Metal::sample(const Hit& hit, const Vec3& wo, Point2 u
     const double p2 = (1 - s) * safe_sqrt(1 - p1 * p1) + s * r * std::sin(phi);
     const Vec3 nh = p1 * t1 + p2 * t2 + safe_sqrt(1 - p1 * p1 - p2 * p2) * vh;
     const Vec3 m = normalize(Vec3{alpha_ * nh.x, alpha_ * nh.y, std::max(1e-12, nh.z)});
-    const Vec3 wi = frame.to_world(2 * dot(o, m) * m - o);
-    const double density = pdf(hit, wo, wi);
+    const Vec3 wi = flip_if_below(2 * dot(o, m) * m - o, wo.z);
+    const double density = pdf(point, wo, wi);
     if (!(density > 0) || !is_finite(wi)) {
         return std::nullopt;  // reflected below the surface
     }
-    return BsdfSample{wi, evaluate(hit, wo, wi), density, false};
+    return BsdfSample{wi, evaluate(point, wo, wi), density, false};
 }
 
 std::unique_ptr<Material> Metal::create(Params& params, const BuildContext& context) {

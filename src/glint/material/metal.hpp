@@ -15,16 +15,20 @@ namespace glint {
 // below the surface is rejected (sample() returns nullopt), so the sampling density is exactly pdf().
 // Below roughness 0.03 (α < 10⁻³) the lobe is a perfect mirror of reflectance F(θo): a delta lobe.
 // Single scattering only: very rough metal loses the light that bounces between microfacets.
+// Looks up F₀ into MaterialPoint::specular.
 class Metal final : public Material {
   public:
     Metal(std::shared_ptr<const Texture> reflectance, double roughness)
         : reflectance_(std::move(reflectance)), alpha_(roughness * roughness) {}
-    Rgb evaluate(const Hit& hit, const Vec3& wo, const Vec3& wi) const override;
-    std::optional<BsdfSample> sample(const Hit& hit, const Vec3& wo, Point2 u) const override;
-    double pdf(const Hit& hit, const Vec3& wo, const Vec3& wi) const override;
     bool is_mirror() const { return alpha_ < kMinAlpha; }
 
     static std::unique_ptr<Material> create(Params& params, const BuildContext& context);
+
+  protected:
+    MaterialPoint look_up(const Hit& hit) const override { return {{}, reflectance_->evaluate(hit)}; }
+    Rgb evaluate(const MaterialPoint& point, const Vec3& wo, const Vec3& wi) const override;
+    std::optional<BsdfSample> sample(const MaterialPoint& point, const Vec3& wo, Point2 u) const override;
+    double pdf(const MaterialPoint& point, const Vec3& wo, const Vec3& wi) const override;
 
   private:
     static constexpr double kMinAlpha = 1e-3;

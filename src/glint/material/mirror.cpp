@@ -5,12 +5,12 @@
 
 namespace glint {
 
-std::optional<BsdfSample> Mirror::sample(const Hit& hit, const Vec3& wo, Point2) const {
-    const double cos_theta = std::abs(dot(hit.shading_normal, wo));
+std::optional<BsdfSample> Mirror::sample(const MaterialPoint& point, const Vec3& wo, Point2) const {
+    const double cos_theta = std::abs(wo.z);
     if (cos_theta <= 0) {
         return std::nullopt;
     }
-    return BsdfSample{mirror_direction(hit, wo), reflectance_->evaluate(hit) / cos_theta, 1.0, true};
+    return BsdfSample{mirror_local(wo), point.specular / cos_theta, 1.0, true};
 }
 
 std::unique_ptr<Material> Mirror::create(Params& params, const BuildContext& context) {

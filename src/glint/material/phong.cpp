@@ -7,39 +7,43 @@
 #include <cmath>
 
 #include "glint/core/frame.hpp"
-#include "glint/material/mirror.hpp"
 #include "glint/params/params.hpp"
 
 namespace glint {
 
-double Phong::specular_probability(const Hit& hit) const {
-    const double d = diffuse_->evaluate(hit).luminance();
-    const double s = specular_->evaluate(hit).luminance();
+namespace {
+
+// The probability of sampling the glossy lobe rather than the diffuse one: its share of the luminance.
+double specular_probability(const MaterialPoint& point) {
+    const double d = point.diffuse.luminance();
+    const double s = point.specular.luminance();
     return d + s > 0 ? s / (d + s) : 0;
 }
 
-Rgb Phong::evaluate(const Hit& hit, const Vec3& wo, const Vec3& wi) const {
-    if (!same_hemisphere(hit, wo, wi)) {
+}  // namespace
+
+Rgb Phong::evaluate(const MaterialPoint& point, const Vec3& wo, const Vec3& wi) const {
+    if (!same_hemisphere(wo, wi)) {
         return {};
     }
-    const double cos_alpha = std::max(0.0, dot(mirror_direction(hit, wo), wi));
+    const double cos_alpha = std::max(0.0, dot(mirror_local(wo), wi));
     const double lobe = (exponent_ + 2) * (0.5 * kInvPi) * std::pow(cos_alpha, exponent_);
-    return diffuse_->evaluate(hit) * kInvPi + specular_->evaluate(hit) * lobe;
+    return point.diffuse * kInvPi + point.specular * lobe;
 }
 
-double Phong::pdf(const Hit& hit, const Vec3& wo, const Vec3& wi) const {
-    if (!same_hemisphere(hit, wo, wi)) {
+double Phong::pdf(const MaterialPoint& point, const Vec3& wo, const Vec3& wi) const {
+    if (!same_hemisphere(wo, wi)) {
         return 0;
     }
-    const double p = specular_probability(hit);
-    const double cos_alpha = std::max(0.0, dot(mirror_direction(hit, wo), wi));
+    const double p = specular_probability(point);
+    const double cos_alpha = std::max(0.0, dot(mirror_local(wo), wi));
     const double lobe_pdf = (exponent_ + 1) * (0.5 * kInvPi) * std::pow(cos_alpha, exponent_);
-    return (1 - p) * std::abs(dot(hit.shading_normal, wi)) * kInvPi + p * lobe_pdf;
+    return (1 - p) * std::abs(wi.z) * kInvPi + p * lobe_pdf;
 }
 
-std::optional<BsdfSample> Phong::sample(const Hit& hit, const Vec3& wo, Point2 u) const {
-    const double p = specular_probability(hit);
-    if (diffuse_->evaluate(hit).is_black() && p == 0) {
+std::optional<BsdfSample> Phong::sample(const MaterialPoint& point, const Vec3& wo, Point2 u) const {
+    const double p = specular_probability(point);
+    if (point.diffuse.is_black() && p == 0) {
         return std::nullopt;
     }
     Vec3 wi;
@@ -48,17 +52,17 @@ std::optional<BsdfSample> Phong::sample(const Hit& hit, const Vec3& wo, Point2 u
         const double cos_alpha = std::pow(u.x / p, 1 / (exponent_ + 1));
         const double sin_alpha = safe_sqrt(1 - cos_alpha * cos_alpha);
         const double phi = 2 * kPi * u.y;
-        wi = Frame::from_normal(mirror_direction(hit, wo))
+        wi = Frame::from_normal(mirror_local(wo))
                  .to_world({sin_alpha * std::cos(phi), sin_alpha * std::sin(phi), cos_alpha});
     } else {
         const Point2 v{(u.x - p) / (1 - p), u.y};
-        wi = Frame::from_normal(face_forward(hit.shading_normal, wo)).to_world(sample_cosine_hemisphere(v));
+        wi = flip_if_below(sample_cosine_hemisphere(v), wo.z);
     }
-    const double density = pdf(hit, wo, wi);
+    const double density = pdf(point, wo, wi);
     if (!(density > 0)) {
         return std::nullopt;  // a lobe direction below the surface
     }
-    return BsdfSample{wi, evaluate(hit, wo, wi), density, false};
+    return BsdfSample{wi, evaluate(point, wo, wi), density, false};
 }
 
 std::unique_ptr<Material> Phong::create(Params& params, const BuildContext& context) {
