@@ -6,7 +6,6 @@
 #include <map>
 #include <memory>
 #include <optional>
-#include <regex>
 #include <sstream>
 
 #include "glint/accel/accelerator.hpp"
@@ -548,24 +547,61 @@ std::vector<std::string> check_source_keys(const MarkdownDoc& doc, const std::ve
 }
 
 KeyReaders key_readers(const std::filesystem::path& source_dir) {
-    // One declaration a line, as clang-format writes these short ones.
-    static const std::regex member(R"((\w+)\s*\(\s*const std::string&\s*key\b)");
-    static const std::regex function(R"((\w+)\s*\(\s*Params&\s*\w+\s*,\s*const std::string&\s*key\b)");
-    KeyReaders readers;
-    const auto matches = [](const std::filesystem::path& file, const std::regex& pattern,
-                            std::set<std::string>& names) {
+    // Reads the declarations backwards from `const std::string& key`, one a line, as clang-format
+    // writes these short ones: `name(` before it is a member getter of params.hpp; `name(Params& p,`
+    // a function in any header. (std::regex would do, but GCC 12 warns inside it under sanitizers.)
+    const std::string key_parameter = "const std::string& key";
+    const auto trim_end = [](std::string& s) { s.erase(s.find_last_not_of(" \t") + 1); };
+    const auto take = [&](std::string& s, const std::string& token) {
+        trim_end(s);
+        if (s.size() < token.size() || s.compare(s.size() - token.size(), token.size(), token) != 0) {
+            return false;
+        }
+        s.erase(s.size() - token.size());
+        return true;
+    };
+    const auto take_word = [&](std::string& s) {
+        trim_end(s);
+        std::size_t start = s.size();
+        while (start > 0 && is_word_char(s[start - 1])) {
+            --start;
+        }
+        std::string word = s.substr(start);
+        s.erase(start);
+        return word;
+    };
+    // Each line's declaration before its key parameter, if it has one.
+    const auto declarations = [&](const std::filesystem::path& file) {
+        std::vector<std::string> before;
         std::istringstream lines(read_text(file));
         for (std::string line; std::getline(lines, line);) {
-            std::smatch m;
-            if (std::regex_search(line, m, pattern)) {
-                names.insert(m[1]);
+            const std::size_t at = line.find(key_parameter);
+            const std::size_t after = at + key_parameter.size();
+            if (at != std::string::npos && (after == line.size() || !is_word_char(line[after]))) {
+                before.push_back(line.substr(0, at));
             }
         }
+        return before;
     };
-    matches(source_dir / "src/glint/params/params.hpp", member, readers.members);
+    KeyReaders readers;
+    for (std::string before : declarations(source_dir / "src/glint/params/params.hpp")) {
+        if (take(before, "(")) {
+            if (std::string name = take_word(before); !name.empty()) {
+                readers.members.insert(name);
+            }
+        }
+    }
     for (const auto& entry : std::filesystem::recursive_directory_iterator(source_dir / "src/glint")) {
-        if (entry.path().extension() == ".hpp") {
-            matches(entry.path(), function, readers.functions);
+        if (entry.path().extension() != ".hpp") {
+            continue;
+        }
+        for (std::string before : declarations(entry.path())) {
+            if (take(before, ",") && !take_word(before).empty() && take(before, "&") &&
+                take_word(before) == "Params" && take(before, "(")) {
+                if (std::string name = take_word(before); !name.empty()) {
+                    readers.functions.insert(name);
+                }
+            }
         }
     }
     return readers;
