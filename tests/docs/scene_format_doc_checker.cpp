@@ -7,6 +7,7 @@
 #include <memory>
 #include <optional>
 #include <sstream>
+#include <tuple>
 
 #include "glint/accel/accelerator.hpp"
 #include "glint/camera/camera.hpp"
@@ -80,12 +81,13 @@ std::vector<std::string> code_spans(const std::string& line) {
     return spans;
 }
 
-// The words of a code span: runs of letters, digits, '_' and '-', so that `ambient-occlusion` is one
-// word and `--seed` (a flag) does not mention the key `seed`.
+// The words of a code span: runs of letters, digits and '_', '-', '.', so that `ambient-occlusion` is
+// one word, `--seed` (a flag) does not mention the key `seed`, nor `render.max_depth` an integrator's
+// own `max_depth`.
 void add_words(const std::string& text, std::set<std::string>& words) {
     std::string word;
     for (const char c : text + " ") {
-        if (is_word_char(c) || c == '-') {
+        if (is_word_char(c) || c == '-' || c == '.') {
             word += c;
         } else if (!word.empty()) {
             words.insert(word);
@@ -128,8 +130,7 @@ std::optional<std::string> marker_argument(const std::string& marker, const std:
     return trim(marker.substr(kind.size() + 1));
 }
 
-// A block loaded and built, with every key the code asked on the way. The description lives on the
-// heap: the recorded asks point at its nodes.
+// A block loaded and built, with every key the code asked on the way.
 struct BuiltBlock {
     std::unique_ptr<SceneDesc> desc;
     bool built = false;
@@ -166,16 +167,29 @@ BuiltBlock build_block(const MarkdownDoc& doc, const YamlBlock& block,
     return out;
 }
 
-// Every map with a scalar `type` in the tree under `node`, with that type.
-void collect_typed_maps(const Node& node, std::map<const Node*, std::string>& typed) {
+// A map told by where it begins and by its keys, as AskedKeyRecorder records it: a copy the builder
+// makes of a map of the description is the same map; a map the builder makes up at the same place
+// (the default integrator at `render:`'s position) is not.
+using MapIdentity = std::tuple<const SourceFile*, int, int, std::vector<std::string>>;
+
+MapIdentity identity(const SourcePos& pos, const std::vector<std::string>& keys) {
+    return {pos.file.get(), pos.line, pos.column, keys};
+}
+
+// Every map in the tree under `node`, by identity.
+void collect_maps(const Node& node, std::map<MapIdentity, const Node*>& maps) {
     if (node.is_map()) {
-        if (const Node* type = node.find("type"); type && type->is_scalar()) {
-            typed[&node] = type->scalar;
-        }
+        maps.emplace(identity(node.pos, node.keys), &node);
     }
     for (const Node& item : node.items) {
-        collect_typed_maps(item, typed);
+        collect_maps(item, maps);
     }
+}
+
+// The scalar `type` of a map, or "".
+std::string type_of(const Node& map) {
+    const Node* type = map.find("type");
+    return type && type->is_scalar() ? type->scalar : "";
 }
 
 const Node* find_path(const Node& root, const std::vector<std::string>& path) {
@@ -341,9 +355,11 @@ std::vector<Concept> scene_concepts() {
         {"textures", names_of(texture_table()), {}, true, {"src/glint/texture"}},
         {"objects", names_of(shape_table()), {}, true, {"src/glint/geometry"}},
         {"lights", names_of(light_table()), {}, true, {"src/glint/light"}},
-        // Named by a plain word of `render:`, not written as maps (yet): their keys are render keys.
+        // render.integrator is {type: NAME, …} with keys of its own (a plain word is the short form).
+        {"Integrators", names_of(integrator_table()), {}, true, {"src/glint/integrator"}},
+        // render.sampler may be written {type: NAME} too, but a sampler has no keys of its own yet: the
+        // plain word is how it is written. Make this true, with examples, when one reads keys.
         {"Samplers", names_of(sampler_table()), {}, false, {}},
-        {"Integrators", names_of(integrator_table()), {}, false, {}},
         {"Accelerators", names_of(accelerator_table()), {"embree"}, false, {}},
     };
 }
@@ -456,8 +472,8 @@ std::vector<std::string> check_asked_keys(const MarkdownDoc& doc, const std::vec
             if (!built.built) {
                 continue;  // check_blocks_build reports it
             }
-            std::map<const Node*, std::string> typed;
-            collect_typed_maps(built.desc->root, typed);
+            std::map<MapIdentity, const Node*> maps;
+            collect_maps(built.desc->root, maps);
             std::map<const Node*, std::size_t> placed_at;
             for (std::size_t i = 0; i < placed.size(); ++i) {
                 if (const Node* node = find_path(built.desc->root, placed[i].path)) {
@@ -465,7 +481,11 @@ std::vector<std::string> check_asked_keys(const MarkdownDoc& doc, const std::vec
                 }
             }
             for (const AskedKeyRecorder::Ask& ask : built.asks) {
-                if (const auto p = placed_at.find(ask.map); p != placed_at.end()) {
+                const auto asked = maps.find(identity(ask.map_pos, ask.map_keys));
+                if (asked == maps.end()) {
+                    continue;  // a map the builder made up
+                }
+                if (const auto p = placed_at.find(asked->second); p != placed_at.end()) {
                     if (!placed_words[p->second].count(ask.key)) {
                         problems.emplace(std::to_string(p->second) + " " + ask.key,
                                          doc.where(block.line) + ": key `" + ask.key + "` of " +
@@ -475,21 +495,22 @@ std::vector<std::string> check_asked_keys(const MarkdownDoc& doc, const std::vec
                     }
                     continue;
                 }
-                const auto t = typed.find(ask.map);
-                if (t == typed.end() || !sections.count(t->second)) {
+                const std::string type = type_of(*asked->second);
+                if (!sections.count(type)) {
                     continue;
                 }
-                for (const NameSection& s : sections.at(t->second)) {
+                for (const NameSection& s : sections.at(type)) {
                     if (!s.words.count(ask.key)) {
                         problems.emplace(
-                            t->second + " " + std::to_string(s.heading) + " " + ask.key,
-                            doc.where(doc.headings[s.heading].line) + ": key `" + ask.key + "` of `" +
-                                t->second + "`, asked by the code when building the yaml block at line " +
+                            type + " " + std::to_string(s.heading) + " " + ask.key,
+                            doc.where(doc.headings[s.heading].line) + ": key `" + ask.key + "` of `" + type +
+                                "`, asked by the code when building the yaml block at line " +
                                 std::to_string(block.line) + ", is not mentioned in its section");
                     }
                 }
             }
-            for (const auto& [map, type] : typed) {
+            for (const auto& [id, map] : maps) {
+                const std::string type = type_of(*map);
                 if (!sections.count(type)) {
                     continue;
                 }

@@ -7,6 +7,7 @@
 
 #include <fstream>
 #include <sstream>
+#include <tuple>
 
 #include "docs/scene_format_doc_checker.hpp"
 #include "glint/params/params.hpp"
@@ -130,6 +131,17 @@ TEST(SceneFormatDocChecker, ARemovedRenderKeyIsReported) {
     const std::string text = edit_section(read_doc_text(), "## render", "`seed`", "seed");
     const auto problems = check_asked_keys(parse(text), scene_concepts(), placed_maps(), kDocsDir);
     EXPECT_TRUE(any_holds(problems, "key `seed` of `render:`")) << listed(problems);
+}
+
+TEST(SceneFormatDocChecker, AnIntegratorsKeyIsChecked) {
+    // The builder reads render.integrator through a copy of its map: the key is still the section's.
+    std::string text = read_doc_text();
+    for (const char* heading : {"## Integrators", "### `whitted`", "### `path`"}) {
+        text = edit_section(text, heading, "`max_depth`", "the depth");
+    }
+    const auto problems = check_asked_keys(parse(text), scene_concepts(), placed_maps(), kDocsDir);
+    EXPECT_TRUE(any_holds(problems, "key `max_depth` of `whitted`")) << listed(problems);
+    EXPECT_TRUE(any_holds(problems, "key `max_depth` of `path`")) << listed(problems);
 }
 
 TEST(SceneFormatDocChecker, AKeyReadOnlyOnABranchIsFoundInTheSource) {
@@ -257,16 +269,18 @@ TEST(AskedKeyRecorder, RecordsEveryKeyAskedPresentOrNot) {
         params.number("absent", 2.0);  // a default does not hide the key
         params.has("looked_for");
         params.child("b").number("c", 0.0);
-        std::set<std::pair<const Node*, std::string>> asked;
+        // Each ask names its map by position and keys: the top level at 1:1, b's map at 2:4.
+        std::set<std::tuple<int, int, std::vector<std::string>, std::string>> asked;
         for (const auto& ask : inner.asks()) {
-            asked.insert({ask.map, ask.key});
+            asked.insert({ask.map_pos.line, ask.map_pos.column, ask.map_keys, ask.key});
         }
-        const Node* b = desc.root.find("b");
-        EXPECT_EQ(asked, (std::set<std::pair<const Node*, std::string>>{{&desc.root, "a"},
-                                                                        {&desc.root, "absent"},
-                                                                        {&desc.root, "looked_for"},
-                                                                        {&desc.root, "b"},
-                                                                        {b, "c"}}));
+        const std::vector<std::string> top{"a", "b"};
+        EXPECT_EQ(asked, (std::set<std::tuple<int, int, std::vector<std::string>, std::string>>{
+                             {1, 1, top, "a"},
+                             {1, 1, top, "absent"},
+                             {1, 1, top, "looked_for"},
+                             {1, 1, top, "b"},
+                             {2, 4, {"c"}, "c"}}));
     }
     EXPECT_TRUE(outer.asks().empty());  // the inner recorder hid the outer one
     params.has("later");

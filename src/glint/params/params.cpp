@@ -77,7 +77,7 @@ AskedKeyRecorder::~AskedKeyRecorder() {
 void Params::ask(const std::string& key) {
     asked_.insert(key);
     if (active_recorder) {
-        active_recorder->asks_.push_back({map_, key});
+        active_recorder->asks_.push_back({map_->pos, map_->keys, key});
     }
 }
 

@@ -96,13 +96,15 @@ class Params {
 
 // A test hook (tests/docs checks that every key a constructor asks for is documented): while a
 // recorder lives, every key that a Params on the same thread asks for is appended to it with the map
-// asked, whether the key was present or not and whether a default was used. Recorders nest; with none
-// alive, asking costs one thread-local load more.
+// asked, whether the key was present or not and whether a default was used. The map is told by its
+// position and keys rather than its address, since a builder may ask a copy (the integrator map
+// built from `render.integrator`). Recorders nest; with none alive, asking costs one load more.
 class AskedKeyRecorder {
   public:
     struct Ask {
-        const Node* map;  // the object asked, e.g. one sphere's map in a SceneDesc
-        std::string key;
+        SourcePos map_pos;                  // where the map asked begins
+        std::vector<std::string> map_keys;  // the keys it has
+        std::string key;                    // the key asked
     };
 
     AskedKeyRecorder();
