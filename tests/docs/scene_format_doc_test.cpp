@@ -251,7 +251,7 @@ TEST(SceneFormatDocChecker, FindsKeysInSource) {
 TEST(SceneFormatDocChecker, FindsTheKeyReadersInTheHeaders) {
     // Guards the source scan against finding no readers (a changed declaration style) and so no keys.
     const KeyReaders readers = key_readers(kSourceDir);
-    for (const char* member : {"has", "number", "positive", "choice", "node", "child"}) {
+    for (const char* member : {"has", "number", "positive", "enumeration", "node", "child"}) {
         EXPECT_TRUE(readers.members.count(member)) << member;
     }
     for (const char* function : {"read_texture", "read_reflectance"}) {
