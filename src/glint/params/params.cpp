@@ -62,6 +62,25 @@ Rgb node_color(const Node& node, const std::string& what) {
             node_number(node.items[2], what + "[2]")};
 }
 
+namespace {
+thread_local AskedKeyRecorder* active_recorder = nullptr;
+}  // namespace
+
+AskedKeyRecorder::AskedKeyRecorder() : outer_(active_recorder) {
+    active_recorder = this;
+}
+
+AskedKeyRecorder::~AskedKeyRecorder() {
+    active_recorder = outer_;
+}
+
+void Params::ask(const std::string& key) {
+    asked_.insert(key);
+    if (active_recorder) {
+        active_recorder->asks_.push_back({map_->pos, map_->keys, key});
+    }
+}
+
 Params::Params(const Node& map, std::string what) : map_(&map), what_(std::move(what)) {
     if (!map.is_map()) {
         throw SceneError(map.pos, what_ + " must be a map of keys and values, not " + map.describe());
@@ -82,7 +101,7 @@ void Params::fail(const std::string& message) const {
 }
 
 const Node* Params::node(const std::string& key) {
-    asked_.insert(key);
+    ask(key);
     const Node* n = map_->find(key);
     if (n) {
         read_.insert(key);

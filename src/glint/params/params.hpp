@@ -30,7 +30,7 @@ class Params {
     const Node& map() const { return *map_; }
     // Whether `key` is present. Asking counts as knowing the key, for did-you-mean suggestions.
     bool has(const std::string& key) {
-        asked_.insert(key);
+        ask(key);
         return map_->find(key) != nullptr;
     }
     // Position of the value under `key` (of the object itself when the key is absent).
@@ -80,6 +80,8 @@ class Params {
     [[noreturn]] void fail(const std::string& message) const;
 
   private:
+    // Notes that a getter asked for `key` (for finish() and any AskedKeyRecorder).
+    void ask(const std::string& key);
     const Node& require(const std::string& key);
     // The error for `word` under `key` when only `choices` are allowed:
     //   <what>.<key> is '<word>'; did you mean '<closest>'? (expected one of: a, b, c)
@@ -90,6 +92,32 @@ class Params {
     std::string what_;
     std::set<std::string> read_;   // keys whose values were used
     std::set<std::string> asked_;  // every key a getter asked for, present or not
+};
+
+// A test hook (tests/docs checks that every key a constructor asks for is documented): while a
+// recorder lives, every key that a Params on the same thread asks for is appended to it with the map
+// asked, whether the key was present or not and whether a default was used. The map is told by its
+// position and keys rather than its address, since a builder may ask a copy (the integrator map
+// built from `render.integrator`). Recorders nest; with none alive, asking costs one load more.
+class AskedKeyRecorder {
+  public:
+    struct Ask {
+        SourcePos map_pos;                  // where the map asked begins
+        std::vector<std::string> map_keys;  // the keys it has
+        std::string key;                    // the key asked
+    };
+
+    AskedKeyRecorder();
+    ~AskedKeyRecorder();
+    AskedKeyRecorder(const AskedKeyRecorder&) = delete;
+    AskedKeyRecorder& operator=(const AskedKeyRecorder&) = delete;
+
+    const std::vector<Ask>& asks() const { return asks_; }
+
+  private:
+    friend class Params;
+    AskedKeyRecorder* outer_;  // the recorder this one hides, restored at destruction
+    std::vector<Ask> asks_;
 };
 
 // Scalar conversions with positioned errors, usable on any node.
