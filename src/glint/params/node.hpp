@@ -27,6 +27,12 @@ struct Node {
     const Node* find(const std::string& key) const;
     // "a number", "a list", "a map", … for messages.
     std::string describe() const;
+    // Removes `key` and its value from a map; false if it was not there.
+    bool remove(const std::string& key);
 };
+
+// The map {type: word} standing for a plain word where a typed object is expected (the short form
+// `integrator: path`), positioned at the word; any other node is returned as it is.
+Node typed_object(const Node& node);
 
 }  // namespace glint

@@ -51,7 +51,7 @@ RenderStats render(const World& world, const View& view, Film& film, const Rende
     while (!progressive.complete()) {
         // A cancel during a pass skips its remaining tiles, even of the last pass; a stop after the
         // pass matters only if a pass is left.
-        if (!progressive.next_pass(cancelled, tile_done) || (callbacks.cancel && callbacks.cancel->load())) {
+        if (!progressive.next_pass(cancelled, tile_done) || cancelled()) {
             cancelled_mid_pass = true;
             break;
         }

@@ -38,19 +38,6 @@ Node empty_map_at(const SourcePos& pos) {
     return empty;
 }
 
-// `render.integrator` and `render.sampler` are objects with a type and their own keys; a plain word is
-// the short form of {type: word}.
-Node typed_object(const Node& node) {
-    if (!node.is_scalar()) {
-        return node;
-    }
-    Node object = empty_map_at(node.pos);
-    object.keys.push_back("type");
-    object.key_positions.push_back(node.pos);
-    object.items.push_back(node);
-    return object;
-}
-
 // The `render:` block's own keys. The sampler and integrator are objects of their own, read by
 // build_view; here their nodes are only marked as read.
 RenderSettings read_render_settings(Params& p) {
@@ -91,20 +78,9 @@ RenderSettings read_render_settings(Params& p) {
     return s;
 }
 
-// The text that identifies a shape for WorldCache: its description without `material` (which the
-// shape does not depend on), with the folder its files resolve in.
 // `map` without `key` (a copy).
 Node without_key(Node map, const std::string& key) {
-    for (size_t i = 0; i < map.keys.size(); ++i) {
-        if (map.keys[i] == key) {
-            map.keys.erase(map.keys.begin() + static_cast<std::ptrdiff_t>(i));
-            map.items.erase(map.items.begin() + static_cast<std::ptrdiff_t>(i));
-            if (i < map.key_positions.size()) {
-                map.key_positions.erase(map.key_positions.begin() + static_cast<std::ptrdiff_t>(i));
-            }
-            break;
-        }
-    }
+    map.remove(key);
     return map;
 }
 
@@ -125,19 +101,17 @@ View build_view(const SceneDesc& desc) {
     View view;
     view.settings = read_render_settings(render);
 
-    // The sampler and the integrator: objects with a type, or a plain word (the short form).
+    // The sampler and the integrator: objects with a type, or a plain word (the short form); left out,
+    // the default's word.
     const auto typed = [&](const std::string& key, const std::string& fallback) {
         const Node* node = render.node(key);
-        Node object = node ? typed_object(*node) : empty_map_at(render.pos());
+        Node word;
         if (!node) {
-            Node type;
-            type.kind = Node::Kind::Scalar;
-            type.scalar = fallback;
-            type.pos = render.pos();
-            object.keys.push_back("type");
-            object.key_positions.push_back(render.pos());
-            object.items.push_back(type);
+            word.kind = Node::Kind::Scalar;
+            word.scalar = fallback;
+            word.pos = render.pos();
         }
+        Node object = typed_object(node ? *node : word);
         if (!object.is_map()) {
             throw SceneError(object.pos, "render." + key + " must be a name or a map with a type, not " +
                                              object.describe());

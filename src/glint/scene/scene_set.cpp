@@ -72,14 +72,8 @@ void apply_set(SceneDesc& desc, const std::string& assignment, const std::string
     for (size_t depth = 0; depth < path.size(); ++depth) {
         const std::string& key = path[depth];
         const bool last = depth + 1 == path.size();
-        if (node->is_scalar() && is_typed_short_form(path, depth)) {
-            Node object;
-            object.kind = Node::Kind::Map;
-            object.pos = node->pos;
-            object.keys.push_back("type");
-            object.key_positions.push_back(node->pos);
-            object.items.push_back(*node);
-            *node = std::move(object);
+        if (is_typed_short_form(path, depth)) {
+            *node = typed_object(*node);
         }
         if (node->kind == Node::Kind::Null) {
             node->kind = Node::Kind::Map;

@@ -121,13 +121,13 @@ std::uint64_t PreviewSession::commit(EditedScene edited) {
         return generation_.load();
     }
     auto rebuilt = std::make_shared<Scene>();
-    rebuilt->view = build_view(edited.desc);
-    check_preview_limits(edited.desc, rebuilt->view.settings);
     if (same_world(current, edited.desc)) {
+        rebuilt->view = build_view(edited.desc);
         rebuilt->world = scene->world;
     } else {
-        rebuilt->world = build_scene(edited.desc, &world_cache_).world;  // checks the top level too
+        *rebuilt = build_scene(edited.desc, &world_cache_);  // checks the top level too
     }
+    check_preview_limits(edited.desc, rebuilt->view.settings);
     std::uint64_t generation = 0;
     {
         std::lock_guard lock(mutex_);

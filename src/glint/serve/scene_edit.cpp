@@ -267,20 +267,15 @@ void apply_edits(Node& root, const std::vector<SceneEdit>& edits) {
             continue;
         }
         const std::string& key = edit.path.back();
+        if (!edit.value) {
+            node->remove(key);
+            continue;
+        }
         size_t index = 0;
         while (index < node->keys.size() && node->keys[index] != key) {
             ++index;
         }
-        if (!edit.value) {
-            if (index < node->keys.size()) {
-                node->keys.erase(node->keys.begin() + static_cast<std::ptrdiff_t>(index));
-                node->items.erase(node->items.begin() + static_cast<std::ptrdiff_t>(index));
-                if (index < node->key_positions.size()) {
-                    node->key_positions.erase(node->key_positions.begin() +
-                                              static_cast<std::ptrdiff_t>(index));
-                }
-            }
-        } else if (index < node->keys.size()) {
+        if (index < node->keys.size()) {
             node->items[index] = *edit.value;
         } else {
             node->keys.push_back(key);
