@@ -88,6 +88,30 @@ lights: [{type: environment, image: ')" +
     expect_mean(region_mean(film, 4, 4, 12, 12), 0.5 * 0.7f);
 }
 
+TEST(Furnace, MatteFloorUnderAGradientSkyWithoutShadowRays) {
+    // A sky linear in the direction, L(ω) = a + b ω_y (the gradient: a = (bottom + top)/2,
+    // b = (top − bottom)/2), seen by an upward Lambertian floor reflects ρ (a + 2b/3): ∫ ω_y cos θ dω over
+    // the upper hemisphere is 2π/3. The path tracer leaves such a sky to BSDF sampling, so it traces no
+    // shadow ray at all and must still converge to that.
+    const Scene scene = scene_from_yaml(R"(
+render: {width: 16, height: 16, samples: 64, integrator: path, max_depth: 50}
+camera: {eye: [0, 10, 0], look_at: [0, 0, 0], up: [0, 0, -1], fov: 20}
+objects: [{type: plane, point: [0, 0, 0], normal: [0, 1, 0], material: {type: matte, albedo: 0.5}}]
+lights: [{type: environment, radiance: {type: gradient, bottom: [1, 1, 1], top: [0.2, 0.4, 1]}}]
+)");
+    Film film(16, 16);
+    const RenderStats stats = render(scene, film);
+    EXPECT_EQ(stats.rays.shadow, 0u);
+    EXPECT_GT(stats.rays.secondary, 0u);
+    const double bottom[3] = {1, 1, 1};
+    const double top[3] = {0.2, 0.4, 1};
+    for (int channel = 0; channel < 3; ++channel) {
+        const double a = (bottom[channel] + top[channel]) / 2;
+        const double b = (top[channel] - bottom[channel]) / 2;
+        expect_mean(region_mean(film, 0, 0, 16, 16, channel), 0.5 * (a + 2 * b / 3));
+    }
+}
+
 TEST(Furnace, GlassUnderAUniformSkyNeitherGainsNorLosesLight) {
     // A clear dielectric sphere under a uniform sky: every path through it ends in the sky, so each
     // pixel sees the sky's radiance; Whitted's Fresnel split must give it too, up to the branches it

@@ -26,7 +26,7 @@ Rgb PathIntegrator::radiance(const World& world, const Ray& camera_ray, SampleSt
         if (!world.intersect(ray, kInf, hit)) {
             const Vec3 dir = normalize(ray.direction);
             const Rgb sky = world.escaped(dir);
-            if (specular || !world.environment) {
+            if (specular || !world.environment || !world.environment->worth_sampling_in_paths()) {
                 radiance += throughput * sky;
             } else {
                 radiance += throughput * sky *
@@ -54,10 +54,11 @@ Rgb PathIntegrator::radiance(const World& world, const Ray& camera_ray, SampleSt
 
         const Bsdf bsdf = material.bsdf(hit);  // the textures, looked up once for all that follows
 
-        // Next-event estimation: one sample of each light.
+        // Next-event estimation: one sample of each light worth sampling (see
+        // Light::worth_sampling_in_paths).
         const Hit at = facing(hit, wo);
         for (const auto& light : world.lights) {
-            if (!light->physical()) {
+            if (!light->physical() || !light->worth_sampling_in_paths()) {
                 continue;
             }
             const Point2 u = samples.next_2d();

@@ -18,9 +18,10 @@ namespace glint {
 //       centre lies along −z, the top row at +y. Nearest pixel (the map is piecewise constant).
 // and `scale` (default 1) multiplies it.
 //
-// Sampling: constant and gradient skies uniformly over the sphere; images by a 2-D piecewise-constant
-// distribution over (u, v) of pixel luminance · sin θ (marginal over rows, conditional per row), whose
-// density per unit (u, v) becomes the solid-angle density pdf(u, v) / (2π² sin θ).
+// Sampling: constant and gradient skies uniformly over the sphere (for the direct-lighting integrators:
+// the path tracer leaves them to BSDF sampling, which matches their smooth radiance better); images by a 2-D
+// piecewise-constant distribution over (u, v) of pixel luminance · sin θ (marginal over rows, conditional per
+// row), whose density per unit (u, v) becomes the solid-angle density pdf(u, v) / (2π² sin θ).
 class EnvironmentLight final : public Light {
   public:
     // Constant (bottom == top) or gradient sky.
@@ -32,6 +33,8 @@ class EnvironmentLight final : public Light {
     double pdf(const Hit& at, const Vec3& wi, const Hit* on_light) const override;
     Rgb escaped(const Vec3& dir) const override;
     bool is_environment() const override { return true; }
+    // A constant or gradient sky: cosine-weighted BSDF sampling already follows it closely.
+    bool worth_sampling_in_paths() const override { return distribution_ != nullptr; }
 
     static std::unique_ptr<Light> create(Params& params, const BuildContext& context);
 

@@ -42,6 +42,14 @@ class Light {
     // lights, which no ray can hit. Multiple importance sampling weighs BSDF-sampled rays with it.
     virtual double pdf(const Hit& /*at*/, const Vec3& /*wi*/, const Hit* /*on_light*/) const { return 0; }
 
+    // Whether the path tracer should sample this light for next-event estimation. False for a light
+    // whose radiance varies so little over the directions it covers that sampling the BSDF finds it
+    // as well as sampling the light would: a shadow ray towards it would buy almost no variance, so
+    // the path tracer leaves it to BSDF sampling, which then counts in full (pbrt-v4 does the same
+    // for its uniform infinite light: `allowIncompletePDF`). Direct-lighting integrators, which have
+    // no BSDF-sampled paths, sample every light whatever this says.
+    virtual bool worth_sampling_in_paths() const { return true; }
+
     // Radiance arriving along a ray that leaves the scene in direction `dir` (unit): an environment's.
     virtual Rgb escaped(const Vec3& /*dir*/) const { return {}; }
     // Whether escaped() is this light's radiance: the scene keeps at most one such light, and it
