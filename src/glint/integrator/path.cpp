@@ -7,8 +7,14 @@
 namespace glint {
 
 namespace {
-constexpr int kRouletteStart = 3;      // bounces before Russian roulette may end a path
-constexpr double kMaxSurvival = 0.95;  // never certain survival: ends paths trapped between mirrors
+// Russian roulette, after kRouletteStart bounces, ends only paths whose throughput has fallen below
+// kRouletteThroughput, with survival probability throughput / kRouletteThroughput. pbrt-v4 lets a
+// path survive with probability equal to its throughput; on rtiow-final that costs 2x the MSE for a
+// 13 % saving in time, on smallpt's scene the same efficiency; 1/4 is as efficient as no roulette on
+// the first and ~6 % better than pbrt's rule on the second (64 spp, against 2048/4096-spp references).
+// Paths that never lose throughput (between mirrors) end at max_depth.
+constexpr int kRouletteStart = 3;
+constexpr double kRouletteThroughput = 0.25;
 }  // namespace
 
 Rgb PathIntegrator::radiance(const World& world, const Ray& camera_ray, SampleStream& samples,
@@ -88,7 +94,8 @@ Rgb PathIntegrator::radiance(const World& world, const Ray& camera_ray, SampleSt
         previous = at;
 
         if (bounce + 1 >= kRouletteStart) {
-            const double survival = std::min(kMaxSurvival, throughput.max_component());
+            // Drawn whatever the survival, so that each bounce reads the same sample dimensions.
+            const double survival = std::min(1.0, throughput.max_component() / kRouletteThroughput);
             if (samples.next_1d() >= survival) {
                 break;
             }

@@ -9,10 +9,10 @@ namespace glint {
 // continuation; light reached by both strategies — area lights and the environment — is weighed by
 // the power heuristic (Veach's multiple importance sampling, β = 2), so neither small bright lights
 // nor large dim ones are noisy. Delta lights are reached only by light sampling, delta lobes (mirror,
-// glass) only by BSDF sampling, each with full weight. Russian roulette ends paths after 3 bounces with
-// probability 1 − min(0.95, max throughput). Beer's law along rays inside absorbing objects.
-// max_depth counts bounces: 1 is direct light only. Ambient and ambient-occlusion lights are left out
-// (they stand in for the indirect light the path tracer computes).
+// glass) only by BSDF sampling, each with full weight. After 3 bounces, Russian roulette ends a path whose
+// throughput has fallen below 1/4 with probability 1 − 4 · max throughput. Beer's law along rays inside
+// absorbing objects. max_depth counts bounces: 1 is direct light only. Ambient and ambient-occlusion lights
+// are left out (they stand in for the indirect light the path tracer computes).
 class PathIntegrator final : public Integrator {
   public:
     explicit PathIntegrator(int max_depth) : max_depth_(max_depth) {}
