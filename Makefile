@@ -2,13 +2,18 @@
 #   make render   install dependencies, build (Release), render the built-in default scene to default.png
 #   make test     install dependencies, build, run the whole test suite
 # Also: make sanitize (tests under ASan + UBSan), make bench, make format, make examples,
-#       make fuzz (the libFuzzer harnesses, FUZZ_SECONDS each; fuzz/README.md).
+#       make fuzz (the libFuzzer harnesses, FUZZ_SECONDS each; fuzz/README.md),
+#       make bench-peers (glint against smallpt's and the RTIOW books' own code; BENCH_MODE=fast or full;
+#       docs/benchmarks.md).
 WERROR ?= $(if $(CI),ON,OFF)
 CMAKE_FLAGS = -DGLINT_WERROR=$(WERROR)
 FUZZ_SECONDS ?= 60
 FUZZ_HARNESSES ?=
+BENCH_MODE ?= fast
+# Debian's python3, where install-deps puts python3-numpy (a python3 earlier on PATH may lack it).
+PYTHON ?= $(if $(wildcard /usr/bin/python3),/usr/bin/python3,python3)
 
-.PHONY: deps build render test sanitize fuzz bench format examples clean
+.PHONY: deps build render test sanitize fuzz bench bench-peers format examples clean
 
 deps:
 	./scripts/install-deps.sh
@@ -35,6 +40,9 @@ fuzz: deps
 
 bench: build
 	./build/release/bench/glint_bench_scene --benchmark_min_time=2
+
+bench-peers: build
+	$(PYTHON) bench/peers.py --mode $(BENCH_MODE)
 
 format:
 	find src apps tests bench fuzz -name '*.cpp' -o -name '*.hpp' | xargs clang-format -i

@@ -6,6 +6,7 @@ set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config clang-format
   python3  # the layer check (scripts/check_layers.py, run by make test)
+  python3-numpy  # make bench-peers (bench/peers.py)
   libtbb-dev libyaml-cpp-dev libcli11-dev libfmt-dev
   libstb-dev libtinyexr-dev libpng-dev libtinyobjloader-dev libembree-dev
   nlohmann-json3-dev libcpp-httplib-dev

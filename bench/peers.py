@@ -1,0 +1,617 @@
+#!/usr/bin/env python3
+"""glint side by side with the peer renderers' own code (smallpt, Ray Tracing in One Weekend books 1 and 2).
+
+    make bench-peers                      # BENCH_MODE=fast: a few minutes
+    make bench-peers BENCH_MODE=full      # the books' sizes and sample counts (~45 min the first time)
+    /usr/bin/python3 bench/peers.py --mode fast [--runs N]
+
+The peers are built from ../shared/peers by its build.sh into build/peers (only when a binary is missing
+or older than the sources); they are never copied into the repository. For each pair it measures, in
+one run, alternating the two renderers (the machine is shared and noisy; medians of the runs):
+  1. the whole-process wall time at equal samples per pixel (and the CPU time, which other load
+     disturbs less);
+  2. the time to equal RMSE against a high-sample reference that the peer makes itself (two halves
+     with different seeds, whose difference estimates the reference's own noise, subtracted from
+     every measured MSE), from fits of log RMSE on log time;
+  3. that glint converges to the peer's image: 16x16-pixel block means, z-scores against the noise of
+     both sides (each estimated from two independent halves);
+  4. the shading overhead: glint's whole-render rays/s against bench/accel's kernel rays/s.
+docs/benchmarks.md explains the method. Results: build/bench-peers/results.json.
+"""
+import argparse
+import json
+import math
+import os
+import re
+import shlex
+import subprocess
+import sys
+import tempfile
+import time
+
+import numpy as np
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+GLINT = os.path.join(ROOT, 'build/release/glint')
+ACCEL = os.path.join(ROOT, 'build/release/bench/glint_bench_accel')
+PEER_SOURCES = os.path.normpath(os.path.join(ROOT, '../shared/peers'))
+PEERS = os.path.join(ROOT, 'build/peers')
+RTIOW = os.path.join(PEERS, 'rtiow')
+REFS = os.path.join(PEERS, 'refs')
+OUT = os.path.join(ROOT, 'build/bench-peers')
+BUNNY = os.path.normpath(os.path.join(ROOT, '../shared/data/meshes/stanford-bunny.obj'))
+BLOCK = 16          # pixels per side of the blocks whose means the convergence check compares
+Z_LIMIT = 4.0       # a block beyond this many standard deviations counts as a disagreement
+
+# Per mode and scene: image size; the spp ladder each renderer renders for the RMSE fits (glint's own
+# when it needs other counts to reach the same RMSE); the spp of
+# the equal-spp timing (repeated `runs` times); the target spp (the peer's RMSE there is the target);
+# the spp of each reference half (peer) and of each convergence half (glint). The RTIOW peers' sizes
+# are fixed in their code (400x225, 400x400), so fast mode changes only their sample counts; b2bvh's
+# 32 spp is fixed too. smallpt's spp must be multiples of 4 (2x2 sub-pixels).
+MODES = {
+    'fast': {
+        'runs': 3,
+        'smallpt': dict(size=(128, 96), ladder=[4, 8, 16, 32], equal=16, target=16, ref=1024, conv=512),
+        'rtiow': dict(size=(400, 225), ladder=[1, 2, 4, 8], equal=4, target=4, ref=64, conv=64),
+        # glint's light sampling needs far fewer samples than the book's brute force here.
+        'cornell': dict(size=(400, 400), ladder=[4, 8, 16, 32], glint_ladder=[1, 2, 4], equal=8, target=32,
+                        ref=64, conv=64),
+        'bunny': dict(size=(512, 128), spp=16, min_time=0.5),
+    },
+    'full': {
+        'runs': 5,
+        # smallpt at 1024x768 would need hours for a reference on 2 cores: 512x384, a quarter of the pixels.
+        'smallpt': dict(size=(512, 384), ladder=[8, 16, 32, 64, 128], equal=64, target=64, ref=256, conv=128),
+        'rtiow': dict(size=(400, 225), ladder=[4, 8, 16, 32, 64], equal=32, target=32, ref=512, conv=256),
+        'cornell': dict(size=(400, 400), ladder=[8, 16, 32, 64, 128], glint_ladder=[1, 2, 4, 8, 16], equal=64,
+                        target=64, ref=1024, conv=256),
+        'bunny': dict(size=(512, 128), spp=64, min_time=2),
+    },
+}
+
+COMMANDS = []   # every command run, in order, for the notes that quote them
+
+
+def log(msg):
+    print(msg, flush=True)
+
+
+# ---------------------------------------------------------------------------------------------------
+# Running things
+
+class Run:
+    """One finished process: wall and CPU seconds, its stderr, and where its image went."""
+    def __init__(self, wall, cpu, err, image):
+        self.wall, self.cpu, self.err, self.image = wall, cpu, err, image
+
+
+def describe(cmd, cwd, env):
+    prefix = ' '.join(f'{k}={v}' for k, v in (env or {}).items())
+    where = f'(cd {shlex.quote(os.path.relpath(cwd, ROOT))} && ' if cwd and cwd != ROOT else ''
+    text = ' '.join(shlex.quote(os.path.relpath(c, ROOT) if c.startswith(ROOT + '/') else c) for c in cmd)
+    text = (prefix + ' ' if prefix else '') + text
+    return where + text + (')' if where else '')
+
+
+def start(cmd, cwd=None, env=None, stdout_path=None):
+    full_env = dict(os.environ, **(env or {}))
+    out = open(stdout_path, 'wb') if stdout_path else subprocess.DEVNULL
+    err = tempfile.TemporaryFile()
+    shown = describe(cmd, cwd, env) + (f' > {os.path.relpath(stdout_path, ROOT)}' if stdout_path else '')
+    COMMANDS.append(shown)
+    t0 = time.perf_counter()
+    proc = subprocess.Popen(cmd, cwd=cwd or ROOT, env=full_env, stdout=out, stderr=err)
+    return (proc, t0, out, err, shown)
+
+
+def finish(handle):
+    proc, t0, out, err, shown = handle
+    _, status, usage = os.wait4(proc.pid, 0)
+    wall = time.perf_counter() - t0
+    proc.returncode = os.waitstatus_to_exitcode(status)
+    if out is not subprocess.DEVNULL:
+        out.close()
+    err.seek(0)
+    text = err.read().decode(errors='replace')
+    err.close()
+    if proc.returncode != 0:
+        sys.exit(f'bench-peers: failed ({proc.returncode}): {shown}\n{text}')
+    return wall, usage.ru_utime + usage.ru_stime, text
+
+
+def run(cmd, cwd=None, env=None, stdout_path=None):
+    wall, cpu, err = finish(start(cmd, cwd, env, stdout_path))
+    return Run(wall, cpu, err, None)
+
+
+def read_pfm(path):
+    """A PFM as float64 rows top first (the file holds the bottom row first), shape (h, w, 3)."""
+    with open(path, 'rb') as f:
+        assert f.readline().strip() == b'PF', path
+        w, h = map(int, f.readline().split())
+        scale = float(f.readline())
+        data = np.frombuffer(f.read(w * h * 12), dtype='<f4' if scale < 0 else '>f4')
+    return data.reshape(h, w, 3)[::-1].astype(np.float64)
+
+
+# ---------------------------------------------------------------------------------------------------
+# The renderers: each `render(spp, seed, path)` returns a Run whose .image is the linear image, or None.
+
+class Renderer:
+    def __init__(self, name, threads, command, image_from, cwd=None, env=None, scratch=False):
+        self.name, self.threads = name, threads
+        self.command, self.image_from, self.cwd, self.env, self.scratch = command, image_from, cwd, env, scratch
+
+    def launch(self, spp, seed, path):
+        cwd = self.cwd
+        if self.scratch:       # smallpt writes image.pfm into its working folder
+            cwd = tempfile.mkdtemp(prefix='smallpt-', dir=OUT)
+        cmd, stdout_path = self.command(spp, seed, path)
+        return start(cmd, cwd, self.env, stdout_path), cwd
+
+    def collect(self, launched, path):
+        handle, cwd = launched
+        wall, cpu, err = finish(handle)
+        image = None
+        if self.image_from == 'cwd':
+            os.replace(os.path.join(cwd, 'image.pfm'), path)
+            os.rmdir(cwd)
+        if self.image_from is not None and path:
+            image = read_pfm(path)
+        return Run(wall, cpu, err, image)
+
+    def render(self, spp, seed, path):
+        return self.collect(self.launch(spp, seed, path), path)
+
+
+def glint(scene, size, threads):
+    def command(spp, seed, path):
+        return [GLINT, 'render', os.path.join(ROOT, scene), '--width', str(size[0]), '--height', str(size[1]),
+                '--spp', str(spp), '--seed', str(seed), '--threads', str(threads), '-o', path], None
+    return Renderer(f'glint {threads}t', threads, command, 'file')
+
+
+def smallpt(size, threads):
+    def command(spp, seed, path):
+        return [os.path.join(PEERS, 'smallpt/smallpt_lin'), str(spp), str(size[0]), str(size[1]), str(seed), '0'], None
+    return Renderer('smallpt', threads, command, 'cwd', env={'OMP_NUM_THREADS': str(threads)}, scratch=True)
+
+
+def rtiow(binary, takes_args=True):
+    def command(spp, seed, path):
+        args = [str(spp), str(seed)] if takes_args else []
+        return [os.path.join(RTIOW, binary, binary + '.bin')] + args, path
+    return Renderer(binary, 1, command, 'file' if takes_args else None, cwd=RTIOW)
+
+
+# ---------------------------------------------------------------------------------------------------
+# Peers and references
+
+def newest_mtime(folder):
+    return max(os.path.getmtime(os.path.join(d, f)) for d, _, files in os.walk(folder) for f in files)
+
+
+def build_peers():
+    binaries = [os.path.join(RTIOW, v, v + '.bin') for v in ('b1', 'b1f', 'b2bvh', 'b2cb', 'b2cbf')] + \
+               [os.path.join(PEERS, 'smallpt', s) for s in ('smallpt', 'smallpt_lin')]
+    sources = newest_mtime(PEER_SOURCES)
+    if all(os.path.exists(b) and os.path.getmtime(b) >= sources for b in binaries):
+        return
+    log('building the peers from ../shared/peers ...')
+    # build.sh wipes OUT/rtiow; the references live beside it, in OUT/refs.
+    run([os.path.join(PEER_SOURCES, 'build.sh'), PEERS])
+
+
+def reference(key, peer, spp, size):
+    """The peer's own high-sample image, as two halves with different seeds rendered in parallel (one
+    thread each), cached in build/peers/refs/ by scene, size and spp. Returns (mean, per-pixel variance
+    of the mean estimated from the halves' difference)."""
+    os.makedirs(REFS, exist_ok=True)
+    paths = [os.path.join(REFS, f'{key}-{size[0]}x{size[1]}-{spp}spp-half{h}.pfm') for h in (1, 2)]
+    binary_time = newest_mtime(os.path.join(PEERS, 'smallpt' if key == 'smallpt' else 'rtiow'))
+    if not all(os.path.exists(p) and os.path.getmtime(p) >= binary_time for p in paths):
+        log(f'  reference: {peer.name} 2 x {spp} spp at {size[0]}x{size[1]} (cached in {os.path.relpath(REFS, ROOT)}) ...')
+        t0 = time.perf_counter()
+        launched = [peer.launch(spp, seed, p) for seed, p in zip((9001, 9002), paths)]
+        for l, p in zip(launched, paths):
+            peer.collect(l, p)
+        log(f'  reference made in {time.perf_counter() - t0:.0f} s')
+    else:
+        COMMANDS.append(f'# reference reused: {", ".join(os.path.relpath(p, ROOT) for p in paths)}')
+    a, b = read_pfm(paths[0]), read_pfm(paths[1])
+    return 0.5 * (a + b), 0.25 * (a - b) ** 2
+
+
+# ---------------------------------------------------------------------------------------------------
+# Statistics
+
+def rmse_against(image, ref_mean, ref_var):
+    """RMSE of an image against the reference, the reference's own noise taken out:
+    E[(X - R)^2] = MSE(X) + Var(R), pixel by pixel."""
+    mse = float(np.mean((image - ref_mean) ** 2) - np.mean(ref_var))
+    return math.sqrt(max(mse, 1e-30))
+
+
+def fit(times, rmses):
+    """log RMSE = a + b log t: (a, b) by least squares with b free, and a with b = -1/2."""
+    x, y = np.log(times), np.log(rmses)
+    if len(x) >= 2 and np.ptp(x) > 0:
+        b, a = np.polyfit(x, y, 1)
+    else:
+        b, a = -0.5, float(np.mean(y + 0.5 * x))
+    return {'free': (float(a), float(b)), 'half': (float(np.mean(y + 0.5 * x)), -0.5)}
+
+
+def time_for(model, target):
+    a, b = model
+    return math.exp((math.log(target) - a) / b)
+
+
+def block_stats(mean, var):
+    """Block means of an image and the variance of each, from per-pixel variances of the mean."""
+    h, w = mean.shape[0] // BLOCK * BLOCK, mean.shape[1] // BLOCK * BLOCK
+    n = BLOCK * BLOCK
+
+    def blocks(x):
+        return x[:h, :w].reshape(h // BLOCK, BLOCK, w // BLOCK, BLOCK, 3).sum(axis=(1, 3))
+    return blocks(mean) / n, blocks(var) / n ** 2
+
+
+def pooled(block_var):
+    """A block's variance, or the mean over it and its 8 neighbours when that is larger. A block whose
+    two halves both happened to miss the rare bright paths (caustics through glass, fireflies) has a
+    low mean and underestimates its own variance; its neighbours, in the same light, do not."""
+    padded = np.pad(block_var, ((1, 1), (1, 1), (0, 0)), mode='edge')
+    h, w = block_var.shape[:2]
+    around = sum(padded[i:i + h, j:j + w] for i in range(3) for j in range(3)) / 9
+    return np.maximum(block_var, around)
+
+
+def convergence(glint_a, glint_b, ref_mean, ref_var):
+    g_mean, g_var = 0.5 * (glint_a + glint_b), 0.25 * (glint_a - glint_b) ** 2
+    gm, gv = block_stats(g_mean, g_var)
+    rm, rv = block_stats(ref_mean, ref_var)
+    gv, rv = pooled(gv), pooled(rv)
+    sigma = np.sqrt(gv + rv)
+    diff = gm - rm
+    z = np.where(sigma > 0, diff / np.where(sigma > 0, sigma, 1), np.where(diff == 0, 0.0, np.inf))
+    beyond = int(np.sum(np.abs(z) > Z_LIMIT))
+    count = z.size
+    finite = z[np.isfinite(z) & (sigma > 0)]
+    # Gaussian noise puts 6e-5 of the blocks beyond 4 sigma; the noise estimates come from only two
+    # halves, so allow one block per thousand (at least one) before calling it a disagreement.
+    passed = beyond <= max(1, count // 1000)
+    floor2 = float(np.mean((g_mean - ref_mean) ** 2) - np.mean(g_var) - np.mean(ref_var))
+    worst = np.unravel_index(int(np.argmax(np.abs(z))), z.shape)
+    return {
+        'blocks': count, 'max_abs_z': float(np.max(np.abs(z))), 'beyond_4sigma': beyond, 'pass': passed,
+        'z_std': float(np.std(finite)) if finite.size else None,
+        'worst_block': {'x': int(worst[1] * BLOCK), 'y': int(worst[0] * BLOCK), 'channel': int(worst[2]),
+                        'glint': float(gm[worst]), 'peer': float(rm[worst])},
+        'mean_ratio_glint_over_peer': float(np.mean(g_mean) / np.mean(ref_mean)),
+        'rmse_floor_relative': math.sqrt(max(floor2, 0.0)) / float(np.mean(ref_mean)),
+    }
+
+
+def median(values):
+    return float(np.median(values))
+
+
+# ---------------------------------------------------------------------------------------------------
+# One pair of renderers on one scene
+
+def equal_spp(peer, others, spp, runs, folder):
+    """Alternating runs at equal spp: peer, then each glint, the order reversed on every other round."""
+    times = {r.name: [] for r in [peer] + others}
+    cpu = {r.name: [] for r in [peer] + others}
+    images = {r.name: [] for r in [peer] + others}
+    for i in range(runs):
+        order = [peer] + others if i % 2 == 0 else others[::-1] + [peer]
+        for r in order:
+            path = os.path.join(folder, f'{r.name.replace(" ", "")}-eq{spp}-{i}.pfm')
+            result = r.render(spp, 101 + i, path)
+            times[r.name].append(result.wall)
+            cpu[r.name].append(result.cpu)
+            images[r.name].append((result.image, result.err))
+    return times, cpu, images
+
+
+def ladder(renderers, spps, folder, ref_mean, ref_var):
+    """Each renderer at each spp of its ladder (seeds apart from the reference's), alternating."""
+    points = {r.name: [] for r in renderers}
+    rungs = max(len(s) for s in spps)
+    for k in range(rungs):
+        order = list(zip(renderers, spps)) if k % 2 == 0 else list(zip(renderers, spps))[::-1]
+        for r, spp_list in order:
+            if k >= len(spp_list):
+                continue
+            spp = spp_list[k]
+            path = os.path.join(folder, f'{r.name.replace(" ", "")}-ladder{spp}.pfm')
+            result = r.render(spp, 11 + k, path)
+            points[r.name].append({'spp': spp, 'wall': result.wall, 'cpu': result.cpu,
+                                   'rmse': rmse_against(result.image, ref_mean, ref_var)})
+    return points
+
+
+def glint_rays_per_second(err):
+    m = re.findall(r'([\d.]+) Mrays/s', err)
+    return float(m[-1]) if m else None
+
+
+def measure_scene(key, cfg, runs, peer, glint_one, glint_all=None, bvh_peer=None, ref_peer=None):
+    """Everything for one scene: equal-spp times, RMSE ladders and fits, the convergence check."""
+    folder = os.path.join(OUT, key)
+    os.makedirs(folder, exist_ok=True)
+    size = cfg['size']
+    log(f'\n== {key}: {peer.name} ({peer.threads} thread{"s" if peer.threads > 1 else ""}) vs {glint_one.name}'
+        + (f' and {glint_all.name}' if glint_all else '') + (f'; {bvh_peer.name}' if bvh_peer else '')
+        + f', {size[0]}x{size[1]}')
+    ref_mean, ref_var = reference(key, ref_peer or peer, cfg['ref'], size)
+    ref_level = float(np.mean(ref_mean))
+    result = {'size': list(size), 'reference_spp': 2 * cfg['ref'], 'reference_mean': ref_level,
+              'reference_rmse_relative': math.sqrt(float(np.mean(ref_var))) / ref_level, 'pairs': {}}
+
+    # 1. Equal spp.
+    others = [glint_one] + ([glint_all] if glint_all else [])
+    log(f'  equal spp: {cfg["equal"]} spp, {runs} alternating runs ...')
+    times, cpu, images = equal_spp(peer, others, cfg['equal'], runs, folder)
+
+    # 2. RMSE ladders.
+    glint_ladder = cfg.get('glint_ladder', cfg['ladder'])
+    log(f'  RMSE ladder: spp {cfg["ladder"]}' + (f', glint {glint_ladder}' if 'glint_ladder' in cfg else '') + ' ...')
+    points = ladder([peer, glint_one], [cfg['ladder'], glint_ladder], folder, ref_mean, ref_var)
+    # The equal-spp runs are points too (same seeds policy: apart from the reference's).
+    for r in [peer, glint_one]:
+        for (image, _), wall, c in zip(images[r.name], times[r.name], cpu[r.name]):
+            points[r.name].append({'spp': cfg['equal'], 'wall': wall, 'cpu': c,
+                                   'rmse': rmse_against(image, ref_mean, ref_var)})
+    fits = {n: fit([p['wall'] for p in pts], [p['rmse'] for p in pts]) for n, pts in points.items()}
+    spp_fits = {n: fit([p['spp'] for p in pts], [p['rmse'] for p in pts]) for n, pts in points.items()}
+    at_target = [p['rmse'] for p in points[peer.name] if p['spp'] == cfg['target']]
+    target = median(at_target)
+    needed = {}
+    for n, pts in points.items():
+        walls = [p['wall'] for p in pts]
+        t_free, t_half = time_for(fits[n]['free'], target), time_for(fits[n]['half'], target)
+        needed[n] = {'free': t_free, 'half': t_half,
+                     'extrapolated': not (0.8 * min(walls) <= t_free <= 1.25 * max(walls)),
+                     'slope_free': fits[n]['free'][1],
+                     'spp_needed': time_for(spp_fits[n]['free'], target),
+                     'spp_needed_half': time_for(spp_fits[n]['half'], target)}
+    # glint on all cores renders the same samples (same bits whatever the threads), so its RMSE at
+    # each spp is glint-1-thread's: its time to the target is its time per spp x glint's spp needed.
+    derived = {}
+    for extra, base in ([(glint_all, glint_one)] if glint_all else []) + ([(bvh_peer, peer)] if bvh_peer else []):
+        derived[extra.name] = base.name
+
+    # 3. Convergence: glint at high spp in two halves (all cores) against the reference.
+    log(f'  convergence: glint 2 x {cfg["conv"]} spp ...')
+    conv_glint = glint_all or glint_one
+    halves = [conv_glint.render(cfg['conv'], 7001 + h, os.path.join(folder, f'glint-conv-half{h}.pfm'))
+              for h in (1, 2)]
+    conv = convergence(halves[0].image, halves[1].image, ref_mean, ref_var)
+    conv['glint_spp'] = 2 * cfg['conv']
+
+    def pair(other_name, peer_name, peer_times, peer_cpu, peer_needed, note=''):
+        p_wall, g_wall = median(peer_times), median(times[other_name])
+        entry = {
+            'peer': peer_name, 'glint': other_name, 'spp': cfg['equal'] if peer_name != 'b2bvh' else 32,
+            'peer_wall_s': p_wall, 'glint_wall_s': g_wall, 'equal_spp_ratio': p_wall / g_wall,
+            'peer_cpu_s': median(peer_cpu), 'glint_cpu_s': median(cpu[other_name]),
+            'equal_spp_cpu_ratio': median(peer_cpu) / median(cpu[other_name]),
+            'glint_mrays_per_s': median([glint_rays_per_second(e) or 0 for _, e in images[other_name]]),
+            'target_rmse_relative': target / ref_level, 'target': f'{peer.name} at {cfg["target"]} spp',
+            'convergence': conv, 'note': note,
+        }
+        g = needed.get(other_name)
+        if g is None:   # glint on all cores: glint-1's spp needed at its own time per spp
+            base = needed[derived[other_name]]
+            per_spp = g_wall / cfg['equal']
+            g = dict(base, free=per_spp * base['spp_needed'], half=per_spp * base['spp_needed_half'])
+            entry['note'] += ('; ' if entry['note'] else '') + \
+                f'{other_name}: RMSE per spp taken from {derived[other_name]} (same samples), time per spp its own'
+        entry.update({
+            'peer_time_to_target_s': peer_needed['free'], 'glint_time_to_target_s': g['free'],
+            'equal_rmse_ratio': peer_needed['free'] / g['free'],
+            'equal_rmse_ratio_slope_half': peer_needed['half'] / g['half'],
+            'peer_slope': peer_needed['slope_free'], 'glint_slope': g['slope_free'],
+            'peer_spp_needed': peer_needed['spp_needed'], 'glint_spp_needed': g['spp_needed'],
+            'extrapolated': bool(peer_needed['extrapolated'] or g['extrapolated']),
+        })
+        return entry
+
+    for other in others:
+        result['pairs'][f'{peer.name} / {other.name}'] = pair(
+            other.name, peer.name, times[peer.name], cpu[peer.name], needed[peer.name])
+
+    if bvh_peer:
+        # b2bvh has only PPM output (gamma 2, clamped, 8 bits) at its fixed 32 spp: timed, not compared
+        # by pixels. Its per-sample estimator is b1f's (see docs/benchmarks.md), so its time to the
+        # target is its own time per spp x b1f's spp needed.
+        log(f'  {bvh_peer.name}: 32 spp (fixed in its code), {runs} alternating runs with glint ...')
+        bvh_times, bvh_cpu, g32, g32cpu, g32img = [], [], [], [], []
+        for i in range(runs):
+            order = [bvh_peer, glint_one] if i % 2 == 0 else [glint_one, bvh_peer]
+            for r in order:
+                if r is bvh_peer:
+                    res = r.render(32, 0, os.path.join(folder, 'b2bvh.ppm'))
+                    bvh_times.append(res.wall)
+                    bvh_cpu.append(res.cpu)
+                else:
+                    res = r.render(32, 201 + i, os.path.join(folder, f'glint-eq32-{i}.pfm'))
+                    g32.append(res.wall)
+                    g32cpu.append(res.cpu)
+                    g32img.append((None, res.err))
+        per_spp = median(bvh_times) / 32
+        base = needed[peer.name]
+        bvh_needed = dict(base, free=per_spp * base['spp_needed'], half=per_spp * base['spp_needed_half'])
+        saved = times[glint_one.name], cpu[glint_one.name], images[glint_one.name]
+        times[glint_one.name], cpu[glint_one.name], images[glint_one.name] = g32, g32cpu, g32img
+        entry = pair(glint_one.name, bvh_peer.name, bvh_times, bvh_cpu, bvh_needed,
+                     note=f'{bvh_peer.name}: no linear output; its time to the target RMSE = its time per spp x '
+                          f'{peer.name}\'s spp needed (same estimator per sample); equal spp at its fixed 32 spp')
+        entry['spp'] = 32
+        times[glint_one.name], cpu[glint_one.name], images[glint_one.name] = saved
+        result['pairs'][f'{bvh_peer.name} / {glint_one.name}'] = entry
+
+    result['ladder'] = points
+    result['fits'] = {n: {'free': f['free'], 'slope_half': f['half']} for n, f in fits.items()}
+    result['convergence'] = conv
+    for name, pts in points.items():
+        log(f'  {name:10s} ' + '  '.join(f'{p["spp"]}spp {p["wall"]:.2f}s rmse {p["rmse"] / ref_level:.4f}'
+                                          for p in sorted(pts, key=lambda p: p['spp'])))
+    log(f'  convergence: {conv["blocks"]} blocks of {BLOCK}x{BLOCK} px x channel, max |z| {conv["max_abs_z"]:.2f}, '
+        f'{conv["beyond_4sigma"]} beyond {Z_LIMIT:.0f} sigma -> {"PASS" if conv["pass"] else "FAIL"}; std of z {conv["z_std"]:.2f}; '
+        f'mean glint/peer {conv["mean_ratio_glint_over_peer"]:.4f}; '
+        f'full-resolution RMSE floor {conv["rmse_floor_relative"]:.4f} of the mean')
+    return result
+
+
+# ---------------------------------------------------------------------------------------------------
+# Shading overhead: bench/accel's kernel rays/s against glint's whole-render rays/s
+
+def read_obj_bounds(path):
+    lo, hi = np.full(3, np.inf), np.full(3, -np.inf)
+    with open(path) as f:
+        vs = [list(map(float, line.split()[1:4])) for line in f if line.startswith('v ')]
+    v = np.array(vs)
+    return v.min(axis=0), v.max(axis=0)
+
+
+def kernel_rates(mesh_name, min_time):
+    """bench/accel's BVH kernel Mrays/s on its ray sets (2 threads) for one mesh."""
+    out = os.path.join(OUT, f'accel-{mesh_name}.json')
+    run([ACCEL, f'--benchmark_filter=^Rays/{mesh_name}/(primary|diffuse|shadow)/bvh/',  # then real_time
+         f'--benchmark_min_time={min_time}', f'--benchmark_out={out}', '--benchmark_out_format=json'])
+    with open(out) as f:
+        text = f.read()
+    if not text.strip():
+        sys.exit(f'bench-peers: {os.path.relpath(ACCEL, ROOT)} ran no {mesh_name} benchmark (renamed?)')
+    data = json.loads(text)
+    rates = {}
+    for b in data['benchmarks']:
+        kind = b['name'].split('/')[2]
+        rates[kind] = b['Mrays/s'] / 1e6 if b['Mrays/s'] > 1e3 else b['Mrays/s']
+    return rates
+
+
+def shading_overhead(cfg, cornell):
+    result = {}
+    if not os.path.exists(BUNNY):
+        log(f'\n== shading overhead: {BUNNY} is absent: the bunny is skipped')
+        result['bunny'] = {'skipped': f'{BUNNY} absent'}
+    elif not os.path.exists(ACCEL):
+        log(f'\n== shading overhead: {ACCEL} is not built: skipped')
+        result['bunny'] = {'skipped': 'glint_bench_accel not built'}
+    else:
+        log('\n== shading overhead: the bunny (bench/accel kernel vs glint render, 2 threads)')
+        kernel = kernel_rates('bunny', cfg['min_time'])
+        # The whole-render mix (primary rays, a diffuse bounce, shadow rays) weights the three kinds
+        # about equally: time per ray is the mean of the times, so the rate is the harmonic mean.
+        kernel_mix = 3 / sum(1 / r for r in kernel.values())
+        # bench/accel's rays: a camera at centre + (0.3, 0.4, 1) x 1.1 |extent| looking at the centre,
+        # 512 x 128 rays over +-0.275 horizontally; diffuse bounces from the primary hits; shadow rays
+        # to a point light at centre + (-0.5, 1.5, 0.5) |extent|. glint renders the same view with the
+        # path tracer at max_depth 2 (primary, one bounce, a shadow ray at each hit), matte 0.5.
+        lo, hi = read_obj_bounds(BUNNY)
+        c, size = 0.5 * (lo + hi), float(np.linalg.norm(hi - lo))
+        eye = c + np.array([0.3, 0.4, 1.0]) * 1.1 * size
+        light = c + np.array([-0.5, 1.5, 0.5]) * size
+        w, h = cfg['size']
+        fov = math.degrees(2 * math.atan(0.275 * h / w))
+        scene = os.path.join(OUT, 'bunny.yaml')
+        with open(scene, 'w') as f:
+            f.write('# Written by bench/peers.py: bench/accel\'s bunny rays, as a glint render.\n'
+                    f'render: {{width: {w}, height: {h}, samples: {cfg["spp"]}, integrator: path, max_depth: 2}}\n'
+                    f'camera: {{type: pinhole, eye: {list(map(float, eye))}, look_at: {list(map(float, c))}, '
+                    f'up: [0, 1, 0], fov: {fov}}}\n'
+                    f'objects:\n  - {{type: mesh, file: {BUNNY}, material: {{type: matte, albedo: 0.5}}}}\n'
+                    f'lights:\n  - {{type: point, position: {list(map(float, light))}, intensity: {size * size}}}\n')
+        renders = [run([GLINT, 'render', scene, '--threads', '2', '--seed', str(1 + i), '-o',
+                        os.path.join(OUT, 'bunny.pfm')]) for i in range(3)]
+        whole = median([glint_rays_per_second(r.err) for r in renders])
+        result['bunny'] = {'kernel_mrays_per_s': kernel, 'kernel_mix_mrays_per_s': kernel_mix,
+                           'whole_render_mrays_per_s': whole, 'ratio': whole / kernel_mix, 'target': 0.6}
+        log(f'  kernel (glint BVH, 2 threads): ' + ', '.join(f'{k} {v:.2f}' for k, v in kernel.items())
+            + f' Mrays/s; harmonic mean {kernel_mix:.2f}')
+        log(f'  glint render (path, max_depth 2, {w}x{h}, {cfg["spp"]} spp, 2 threads): {whole:.2f} Mrays/s')
+        log(f'  whole-render / kernel: {whole / kernel_mix:.2f} (target >= 0.6)')
+    # Cornell: bench/accel races meshes and spheres only, so no kernel figure; glint's whole-render
+    # rate on the Cornell scene (2 threads, from the convergence runs) is reported on its own.
+    result['cornell'] = {'kernel_mrays_per_s': None, 'whole_render_mrays_per_s': cornell,
+                         'note': 'bench/accel has no Cornell ray set (it races meshes and spheres): kernel n/a'}
+    log(f'  Cornell (rtiow-cornell.yaml, 2 threads): glint whole render {cornell:.2f} Mrays/s; '
+        'kernel n/a (bench/accel has no Cornell ray set)')
+    return result
+
+
+# ---------------------------------------------------------------------------------------------------
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split('\n')[0])
+    parser.add_argument('--mode', choices=sorted(MODES), default=os.environ.get('BENCH_MODE', 'fast'))
+    parser.add_argument('--runs', type=int, help='alternating runs at equal spp (default: 3 fast, 5 full)')
+    parser.add_argument('--only', nargs='*', choices=['smallpt', 'rtiow', 'cornell', 'overhead'],
+                        help='measure only these (default: all)')
+    args = parser.parse_args()
+    mode = MODES[args.mode]
+    runs = args.runs or mode['runs']
+    only = set(args.only or ['smallpt', 'rtiow', 'cornell', 'overhead'])
+    if not os.path.exists(GLINT):
+        sys.exit(f'bench-peers: {GLINT} is missing: make build first')
+    os.makedirs(OUT, exist_ok=True)
+    t_start = time.perf_counter()
+    build_peers()
+    results = {'mode': args.mode, 'runs': runs, 'glint': GLINT, 'scenes': {}}
+
+    if 'smallpt' in only:
+        cfg = mode['smallpt']
+        results['scenes']['smallpt'] = measure_scene(
+            'smallpt', cfg, runs, smallpt(cfg['size'], 2), glint('examples/smallpt.yaml', cfg['size'], 2),
+            ref_peer=smallpt(cfg['size'], 1))
+    if 'rtiow' in only:
+        cfg = mode['rtiow']
+        results['scenes']['rtiow-final'] = measure_scene(
+            'rtiow', cfg, runs, rtiow('b1f'), glint('examples/rtiow-final.yaml', cfg['size'], 1),
+            glint('examples/rtiow-final.yaml', cfg['size'], 2), bvh_peer=rtiow('b2bvh', takes_args=False))
+    cornell_rate = None
+    if 'cornell' in only:
+        cfg = mode['cornell']
+        results['scenes']['rtiow-cornell'] = measure_scene(
+            'cornell', cfg, runs, rtiow('b2cbf'), glint('examples/rtiow-cornell.yaml', cfg['size'], 1),
+            glint('examples/rtiow-cornell.yaml', cfg['size'], 2))
+        cornell_rate = results['scenes']['rtiow-cornell']['pairs']['b2cbf / glint 2t']['glint_mrays_per_s']
+    if 'overhead' in only:
+        results['shading_overhead'] = shading_overhead(mode['bunny'], cornell_rate or float('nan'))
+
+    results['seconds'] = time.perf_counter() - t_start
+    results['commands'] = COMMANDS
+    with open(os.path.join(OUT, 'results.json'), 'w') as f:
+        json.dump(results, f, indent=1)
+
+    log('\ncommands run (cwd: the repository unless shown):')
+    for c in COMMANDS:
+        log('  ' + c)
+    log(f'\n== bench-peers ({args.mode} mode, medians of {runs} alternating runs; ratios peer/glint: > 1 means '
+        'glint is faster)')
+    log(f'{"pair":24s} {"scene":14s} {"spp":>4s} {"eq-spp wall":>11s} {"(cpu)":>6s} {"eq-RMSE":>8s} '
+        f'{"(slope -1/2)":>12s} {"slopes peer/glint":>17s}  convergence')
+    for scene, r in results['scenes'].items():
+        for name, p in r['pairs'].items():
+            c = p['convergence']
+            log(f'{name:24s} {scene:14s} {p["spp"]:4d} {p["equal_spp_ratio"]:11.2f} {p["equal_spp_cpu_ratio"]:6.2f} '
+                f'{p["equal_rmse_ratio"]:7.2f}{"*" if p["extrapolated"] else " "} '
+                f'{p["equal_rmse_ratio_slope_half"]:12.2f} {p["peer_slope"]:8.2f}/{p["glint_slope"]:<8.2f}  '
+                f'{"PASS" if c["pass"] else "FAIL"} (max|z| {c["max_abs_z"]:.1f}, {c["beyond_4sigma"]}/{c["blocks"]} > 4σ)')
+    log('eq-RMSE: time to reach the peer\'s RMSE at its target spp (table above, per scene), from the fits of '
+        'log RMSE on log wall time (free slope; * = outside the measured times); slope -1/2: the same with the '
+        'slope fixed. cpu: the CPU-time ratio at equal spp.')
+    for name, p in [(n, p) for r in results['scenes'].values() for n, p in r['pairs'].items() if p['note']]:
+        log(f'note ({name}): {p["note"]}')
+    log(f'results: {os.path.relpath(os.path.join(OUT, "results.json"), ROOT)}; '
+        f'{results["seconds"]:.0f} s in all')
+
+
+if __name__ == '__main__':
+    main()
