@@ -66,6 +66,8 @@ ViewParams read_view_params(Params& params, FilmSize film) {
         // The view plane at distance d shows height/2 pixels above the centre: tan(fov/2) = (h/2)/d.
         view.view_distance = 0.5 * film.height / std::tan(radians(fov) / 2);
     }
+    // A near plane, as smallpt's camera has (its rays start 140 units along the view, past a wall).
+    view.near = params.non_negative("near", 0.0);
     return view;
 }
 
@@ -74,6 +76,15 @@ Vec3 view_plane_direction(const ViewParams& view, FilmSize size, Point2 film) {
     const double y = view.pixel_size * (0.5 * size.height - film.y);
     const CameraBasis& b = view.basis;
     return x * b.u + y * b.v - view.view_distance * b.w;
+}
+
+Ray ray_from_near_plane(const Vec3& origin, const Vec3& direction, double forward, double near) {
+    if (near == 0) {
+        return {origin, normalize(direction)};  // no near plane: today's rays, unchanged
+    }
+    // `direction` advances `forward` along the view per unit of t: scaling it by near / forward reaches
+    // the plane exactly, without the rounding of a cosine taken from the normalised direction.
+    return {origin + direction * (near / forward), normalize(direction)};
 }
 
 }  // namespace glint

@@ -67,18 +67,25 @@ struct ViewFrame {
 };
 ViewFrame read_view_frame(Params& params);
 
-// The viewing parameters shared by the perspective cameras: eye, look_at, up, and either the paper's
-// view-plane distance d (in pixels) with zoom, or a vertical field of view. Reads and checks them.
+// The viewing parameters shared by the perspective cameras: eye, look_at, up, either the paper's
+// view-plane distance d (in pixels) with zoom or a vertical field of view, and the near clipping plane.
+// Reads and checks them.
 struct ViewParams {
     Vec3 eye;
     Vec3 look_at;
     CameraBasis basis;
     double view_distance = 0;  // d, in pixel units
     double pixel_size = 1;     // 1 / zoom
+    double near = 0;           // the near plane's distance from the eye along the view direction (−w)
 };
 ViewParams read_view_params(Params& params, FilmSize film);
 // The (not normalised) direction from the eye through the view-plane point of `film`: its component
 // along −w is the view distance d, across it the film offset from the image centre in view-plane units.
 Vec3 view_plane_direction(const ViewParams& view, FilmSize size, Point2 film);
+// The primary ray from `origin` (a point of the plane through the eye across w: the eye or a lens point)
+// along `direction`, whose component along the view direction −w is `forward` (> 0), started where it
+// crosses the near plane: the plane across w at `near` from the eye, so nothing nearer is seen. The
+// returned direction is unit; with near = 0 the ray is {origin, normalize(direction)}, bit for bit.
+Ray ray_from_near_plane(const Vec3& origin, const Vec3& direction, double forward, double near);
 
 }  // namespace glint

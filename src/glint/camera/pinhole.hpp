@@ -5,7 +5,8 @@
 namespace glint {
 
 // The virtual pinhole camera of paper §IV: every ray starts at the eye and passes through a point of
-// the view plane at distance d along −w; the plane's pixels are pixel_size (1/zoom) wide.
+// the view plane at distance d along −w; the plane's pixels are pixel_size (1/zoom) wide. With a near
+// plane (`near` > 0) the ray starts where it crosses the plane across w at `near` from the eye.
 class PinholeCamera final : public Camera {
   public:
     PinholeCamera(const ViewParams& view, FilmSize film) : view_(view), film_(film) {}
