@@ -110,6 +110,19 @@ TEST(Pinhole, NearPlaneStartsRaysWhereTheyCrossIt) {
     EXPECT_EQ(a.direction, b.direction);
 }
 
+TEST(Pinhole, NearSphereStartsRaysAtTheNearDistanceAlongThemselves) {
+    const std::string view = "eye: [1, 2, 3], look_at: [-2, 0.5, -1], fov: 50";
+    const Scene plain = camera_scene("{" + view + "}");
+    const Scene clipped = camera_scene("{" + view + ", near: 2, near_shape: sphere}");
+    const Vec3 eye{1, 2, 3};
+    for (const Point2 film : {Point2{100, 50}, Point2{0, 0}, Point2{199.9, 3.25}}) {
+        const Ray from_eye = plain.view.camera->generate_ray(film, {});
+        const Ray from_near = clipped.view.camera->generate_ray(film, {});
+        EXPECT_LT(length(from_near.origin - (eye + 2 * from_eye.direction)), 1e-12);
+        EXPECT_EQ(from_near.direction, from_eye.direction);
+    }
+}
+
 // The colour of the image centre of an emissive wall at depth 1 in front of one at depth 5, seen by a
 // camera with the given near plane.
 Rgb centre_seen_with_near(double near) {
@@ -136,6 +149,8 @@ TEST(Pinhole, RejectsANegativeOrNonNumericNear) {
     EXPECT_NE(test::camera_error("{near: -1}").find("camera.near must be zero or more"), std::string::npos);
     EXPECT_NE(test::camera_error("{near: .inf}").find("camera.near must be"), std::string::npos);
     EXPECT_NE(test::camera_error("{near: far}").find("camera.near must be a number"), std::string::npos);
+    EXPECT_NE(test::camera_error("{near: 1, near_shape: cube}").find("camera.near_shape is 'cube'"),
+              std::string::npos);
 }
 
 }  // namespace

@@ -67,16 +67,22 @@ struct ViewFrame {
 };
 ViewFrame read_view_frame(Params& params);
 
+// Where a camera with a near distance starts its rays: on the plane across the view direction at that
+// distance (what a user expects of a near clipping plane), or at that distance along each ray from
+// where it leaves the eye or lens (a sphere about the eye: smallpt's camera as g++ compiles it).
+enum class NearShape { Plane, Sphere };
+
 // The viewing parameters shared by the perspective cameras: eye, look_at, up, either the paper's
-// view-plane distance d (in pixels) with zoom or a vertical field of view, and the near clipping plane.
-// Reads and checks them.
+// view-plane distance d (in pixels) with zoom or a vertical field of view, and the near clipping
+// surface. Reads and checks them.
 struct ViewParams {
     Vec3 eye;
     Vec3 look_at;
     CameraBasis basis;
     double view_distance = 0;  // d, in pixel units
     double pixel_size = 1;     // 1 / zoom
-    double near = 0;           // the near plane's distance from the eye along the view direction (−w)
+    double near = 0;           // the near surface's distance from the eye (see NearShape); 0: none
+    NearShape near_shape = NearShape::Plane;
 };
 ViewParams read_view_params(Params& params, FilmSize film);
 // The (not normalised) direction from the eye through the view-plane point of `film`: its component
@@ -84,8 +90,8 @@ ViewParams read_view_params(Params& params, FilmSize film);
 Vec3 view_plane_direction(const ViewParams& view, FilmSize size, Point2 film);
 // The primary ray from `origin` (a point of the plane through the eye across w: the eye or a lens point)
 // along `direction`, whose component along the view direction −w is `forward` (> 0), started where it
-// crosses the near plane: the plane across w at `near` from the eye, so nothing nearer is seen. The
-// returned direction is unit; with near = 0 the ray is {origin, normalize(direction)}, bit for bit.
-Ray ray_from_near_plane(const Vec3& origin, const Vec3& direction, double forward, double near);
+// crosses the view's near surface, so that nothing nearer is seen. The returned direction is unit; with
+// near = 0 the ray is {origin, normalize(direction)}, bit for bit.
+Ray ray_from_near_surface(const ViewParams& view, const Vec3& origin, const Vec3& direction, double forward);
 
 }  // namespace glint

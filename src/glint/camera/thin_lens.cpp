@@ -1,4 +1,4 @@
-// Thin lens {type: thin-lens, eye, look_at, up, fov | view_distance + zoom, near,
+// Thin lens {type: thin-lens, eye, look_at, up, fov | view_distance + zoom, near, near_shape,
 //            lens_radius | f_stop + focal_length, focus_distance}.
 #include "glint/camera/thin_lens.hpp"
 
@@ -14,7 +14,7 @@ Ray ThinLensCamera::generate_ray(Point2 film, Point2 lens) const {
     const Point2 disk = square_to_disk_concentric(lens);
     const Vec3 lens_offset = lens_radius_ * (disk.x * view_.basis.u + disk.y * view_.basis.v);
     // The lens offset lies across w, so the direction still advances focus_distance along the view.
-    return ray_from_near_plane(view_.eye + lens_offset, to_focus - lens_offset, focus_distance_, view_.near);
+    return ray_from_near_surface(view_, view_.eye + lens_offset, to_focus - lens_offset, focus_distance_);
 }
 
 std::unique_ptr<Camera> ThinLensCamera::create(Params& params, const BuildContext&, FilmSize film) {
