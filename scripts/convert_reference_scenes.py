@@ -84,37 +84,49 @@ def convert_smallpt(data):
     width, height = cam["image_width"], cam["image_height"]
     d = cam["direction_unnormalized"]
     d_len = math.sqrt(sum(c * c for c in d))
-    # cy has length .5135 and the image spans cy · [−0.5, 0.5] at distance |cam.d| along the view.
-    fov = 2 * math.degrees(math.atan(0.5135 / 2 / d_len))
+    # smallpt normalises cam.d before it builds cx and cy, so the view plane is at distance 1, where cy
+    # (length .5135) spans the image height: tan(fov / 2) = .5135 / 2.
+    fov = 2 * math.degrees(math.atan(0.5135 / 2))
     look_at = [cam["origin"][i] + d[i] / d_len * 100 for i in range(3)]
+    # Its primary ray is Ray(cam.o + d*140, d.norm()), d = cx·(..) + cy·(..) + cam.d; Vec::norm()
+    # normalises d in place, and C++ leaves the order of the two arguments unspecified. g++ (which
+    # builds the peer and smallpt's published image) evaluates d.norm() first: the rays start 140 along
+    # themselves, on a sphere about cam.o. (clang goes left to right: the plane at 140 along the view.)
+    near = 140
     out = [
         "# smallpt's scene (Kevin Beason, 2008), converted exactly by scripts/convert_reference_scenes.py from",
         "# ../shared/data/scenes/smallpt.json: nine spheres, the walls being spheres of radius 1e5.",
-        "# Camera: smallpt starts each primary ray 140 units along its direction from cam.o (a near plane)",
-        "# and so never sees the front wall 'Frnt', which lies between; glint's pinhole at cam.o has no near",
-        "# plane, so Frnt is left out. That changes no radiance: Frnt is black (albedo 0, no emission), and",
-        "# a ray leaving through its place sees the black background instead.",
-        f"# fov = 2 atan(0.5135 / 2 / |cam.d|) = {fov:.4f}°; pixels are square (cx = w · .5135 / h).",
+        "# Camera: smallpt's primary ray is Ray(cam.o + d*140, d.norm()), d = cx·(..) + cy·(..) + cam.d.",
+        "# norm() normalises d in place and C++ leaves the order of the two arguments unspecified: g++,",
+        f"# which builds smallpt, normalises first, so the rays start {near} along themselves (`near: {near},",
+        "# near_shape: sphere`); clang would start them on the plane at 140 along the view (near_shape:",
+        "# plane), which reaches above the ceiling in the top rows and shows the light there. Either way the",
+        "# black front wall 'Frnt' lies nearer and is never seen, but it stays in the scene: the walls are",
+        "# spheres of radius 1e5 that continue past the room, and without Frnt light leaving the room",
+        "# through its place comes back off them (about +3 % overall, up to +19 % on the near ceiling).",
+        f"# fov = 2 atan(.5135 / 2) = {fov:.4f}° (cam.d is normalised before cx and cy are built); pixels are",
+        "# square (cx = w · .5135 / h).",
         "# Materials: DIFF → matte, SPEC → mirror, REFR → dielectric of index 1.5 with `fresnel:",
         "# schlick-outside` (smallpt's Schlick reflectance, its cosine taken in the air; smallpt traces both",
         "# lobes up to depth 2 and then picks one with P = .25 + .5 Re, weighted Re/P or Tr/(1 − P): the same",
         "# expectation as glint's choice with probability Re), and the light 'Lite' (emission 12, colour 0)",
         "# → an area light on its sphere, which the ceiling mostly covers.",
-        "# Not reproduced: smallpt's 2×2 sub-pixels with a tent filter and per-sub-pixel clamping to [0, 1]",
-        "# (a clamp of a noisy mean: its expected value depends on the sample count, so no unbiased renderer",
-        "# converges to it), the 0.999 colour of its glass (glint's dielectric is clear: 0.1 % more light",
-        "# per crossing), and its unbounded depth (glint stops at max_depth 50, after Russian roulette).",
+        "# Not reproduced: smallpt's 2×2 sub-pixels with a tent filter (glint's pixels are boxes: the same",
+        "# image blurred by less than a pixel) and its per-sub-pixel clamping to [0, 1] (a clamp of a noisy",
+        "# mean: its expected value depends on the sample count, so no unbiased renderer converges to it;",
+        "# compare with smallpt_lin's CLAMP 0), the 0.999 colour of its glass (glint's dielectric is clear:",
+        "# 0.1 % more light per crossing), and its unbounded depth (glint stops at max_depth 50, after",
+        "# Russian roulette). tests/e2e/smallpt_test.cpp checks that both converge to the same image.",
         "# Full quality (smallpt's size; `./smallpt 64` takes 64 spp):",
         f"#   glint render examples/smallpt.yaml --width {width} --height {height} --spp 64 -o smallpt.png",
         "render: {width: 256, height: 192, samples: 4, integrator: path, max_depth: 50}",
-        f"camera: {{type: pinhole, eye: {vec(cam['origin'])}, look_at: {vec(look_at)}, up: [0, 1, 0], fov: {num(fov)}}}",
+        f"camera: {{type: pinhole, eye: {vec(cam['origin'])}, look_at: {vec(look_at)}, up: [0, 1, 0], fov: {num(fov)},"
+        f" near: {near}, near_shape: sphere}}",
         "objects:",
     ]
     lights = []
     for s in data["spheres"]:
         name = s["name"]
-        if name == "Frnt":
-            continue
         shape = f"{{type: sphere, center: {vec(s['center'])}, radius: {num(s['radius'])}}}"
         if any(s["emission"]):
             assert not any(s["color"]), "an emitter that also reflects needs an emissive + matte material"

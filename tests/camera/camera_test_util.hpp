@@ -4,6 +4,7 @@
 #include <string>
 
 #include "glint/camera/camera.hpp"
+#include "glint/params/diagnostics.hpp"
 #include "test_util.hpp"
 
 namespace glint::test {
@@ -12,6 +13,16 @@ namespace glint::test {
 inline Scene camera_scene(const std::string& camera, int width = 200, int height = 100) {
     return scene_from_text("render: {width: " + std::to_string(width) +
                            ", height: " + std::to_string(height) + "}\ncamera: " + camera + "\n");
+}
+
+// The message of the error building a camera (given as a YAML flow map) gives, or "no error".
+inline std::string camera_error(const std::string& camera) {
+    try {
+        camera_scene(camera);
+    } catch (const SceneError& e) {
+        return e.message();
+    }
+    return "no error";
 }
 
 // The distance from `point` to the line of `ray` (both ways), for "does this ray pass through p".

@@ -1,7 +1,6 @@
 #include <gtest/gtest.h>
 
-#include "glint/camera/camera.hpp"
-#include "test_util.hpp"
+#include "camera/camera_test_util.hpp"
 
 namespace glint {
 namespace {
@@ -54,10 +53,7 @@ TEST(CameraBasis, DegenerateUpLookingStraightDownOrUpGivesAValidBasis) {
     expect_orthonormal_right_handed(sideways);
 }
 
-Scene camera_scene(const std::string& camera, int width = 200, int height = 100) {
-    return test::scene_from_text("render: {width: " + std::to_string(width) +
-                                 ", height: " + std::to_string(height) + "}\ncamera: " + camera + "\n");
-}
+using test::camera_scene;
 
 TEST(Pinhole, TheImageCentreLooksAtLookAt) {
     const Scene scene = camera_scene("{eye: [1, 2, 3], look_at: [-2, 0.5, 0], fov: 50}");
@@ -89,6 +85,72 @@ TEST(Pinhole, KnownWorldPointProjectsToTheExpectedPixel) {
     const Scene zoomed = camera_scene("{eye: [0, 0, 0], look_at: [0, 0, -1], view_distance: 100, zoom: 2}");
     const Ray rz = zoomed.view.camera->generate_ray({100 + 200 * 1.5 / 5, 50 + 200 * 0.5 / 5}, {});
     EXPECT_NEAR(length(normalize(rz.direction) - normalize(point)), 0, 1e-12);
+}
+
+TEST(Pinhole, NearPlaneStartsRaysWhereTheyCrossIt) {
+    // The near-0 ray through each film point, started on the plane across the view at depth 2: its
+    // origin is where that ray reaches depth 2 (origin·forward = 2, on the same line), direction kept.
+    const std::string view = "eye: [1, 2, 3], look_at: [-2, 0.5, -1], fov: 50";
+    const Scene plain = camera_scene("{" + view + "}");
+    const Scene clipped = camera_scene("{" + view + ", near: 2}");
+    const Vec3 eye{1, 2, 3};
+    const Vec3 forward = normalize(Vec3(-2, 0.5, -1) - eye);
+    for (const Point2 film : {Point2{100, 50}, Point2{0, 0}, Point2{199.9, 3.25}, Point2{17.5, 99.9}}) {
+        const Ray from_eye = plain.view.camera->generate_ray(film, {});
+        const Ray from_near = clipped.view.camera->generate_ray(film, {});
+        EXPECT_NEAR(dot(from_near.origin - eye, forward), 2, 1e-12);
+        EXPECT_LT(length(from_near.origin - test::at_depth(from_eye, eye, forward, 2)), 1e-12);
+        EXPECT_LT(length(from_near.direction - from_eye.direction), 1e-15);
+    }
+    // Unset, and 0, are today's camera bit for bit.
+    const Scene zero = camera_scene("{" + view + ", near: 0}");
+    const Ray a = zero.view.camera->generate_ray({33.3, 44.4}, {});
+    const Ray b = plain.view.camera->generate_ray({33.3, 44.4}, {});
+    EXPECT_EQ(a.origin, b.origin);
+    EXPECT_EQ(a.direction, b.direction);
+}
+
+TEST(Pinhole, NearSphereStartsRaysAtTheNearDistanceAlongThemselves) {
+    const std::string view = "eye: [1, 2, 3], look_at: [-2, 0.5, -1], fov: 50";
+    const Scene plain = camera_scene("{" + view + "}");
+    const Scene clipped = camera_scene("{" + view + ", near: 2, near_shape: sphere}");
+    const Vec3 eye{1, 2, 3};
+    for (const Point2 film : {Point2{100, 50}, Point2{0, 0}, Point2{199.9, 3.25}}) {
+        const Ray from_eye = plain.view.camera->generate_ray(film, {});
+        const Ray from_near = clipped.view.camera->generate_ray(film, {});
+        EXPECT_LT(length(from_near.origin - (eye + 2 * from_eye.direction)), 1e-12);
+        EXPECT_EQ(from_near.direction, from_eye.direction);
+    }
+}
+
+// The colour of the image centre of an emissive wall at depth 1 in front of one at depth 5, seen by a
+// camera with the given near plane.
+Rgb centre_seen_with_near(double near) {
+    const Scene scene = test::scene_from_text(R"(
+render: {width: 4, height: 4, samples: 1, integrator: raycast}
+camera: {eye: [0, 0, 0], look_at: [0, 0, -1], fov: 40, near: )" +
+                                              std::to_string(near) + R"(}
+objects:
+  - {type: rectangle, corner: [-5, -5, -1], edge1: [10, 0, 0], edge2: [0, 10, 0],
+     material: {type: emissive, radiance: [1, 0, 0], two_sided: true}}
+  - {type: rectangle, corner: [-50, -50, -5], edge1: [100, 0, 0], edge2: [0, 100, 0],
+     material: {type: emissive, radiance: [0, 0, 1], two_sided: true}}
+)");
+    return test::render_film(scene).pixel(2, 2);
+}
+
+TEST(Pinhole, NothingNearerThanTheNearPlaneIsSeen) {
+    EXPECT_EQ(centre_seen_with_near(0), Rgb(1, 0, 0));    // the near wall hides the far one
+    EXPECT_EQ(centre_seen_with_near(0.9), Rgb(1, 0, 0));  // the near plane in front of the wall
+    EXPECT_EQ(centre_seen_with_near(2), Rgb(0, 0, 1));    // past it: only the far wall is seen
+}
+
+TEST(Pinhole, RejectsANegativeOrNonNumericNear) {
+    EXPECT_NE(test::camera_error("{near: -1}").find("camera.near must be zero or more"), std::string::npos);
+    EXPECT_NE(test::camera_error("{near: .inf}").find("camera.near must be"), std::string::npos);
+    EXPECT_NE(test::camera_error("{near: far}").find("camera.near must be a number"), std::string::npos);
+    EXPECT_NE(test::camera_error("{near: 1, near_shape: cube}").find("camera.near_shape is 'cube'"),
+              std::string::npos);
 }
 
 }  // namespace

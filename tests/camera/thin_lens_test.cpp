@@ -50,6 +50,29 @@ TEST(ThinLens, PointsOnTheFocusPlaneAreSharp) {
     }
 }
 
+TEST(ThinLens, NearPlaneStartsRaysOnItAndKeepsTheFocus) {
+    // With near 1.5 each ray starts on the plane across the view at depth 1.5 from the lens, on the
+    // line of the near-0 ray from the same lens point, and still passes through the focus point.
+    const std::string view =
+        "type: thin-lens, eye: [1, 2, 3], look_at: [-2, 0.5, -1], fov: 50, "
+        "lens_radius: 0.3, focus_distance: 4";
+    const Scene plain = camera_scene("{" + view + "}");
+    const Scene clipped = camera_scene("{" + view + ", near: 1.5}");
+    const Vec3 eye{1, 2, 3};
+    const Vec3 forward = normalize(Vec3(-2, 0.5, -1) - eye);
+    for (const Point2 film : {Point2{100, 50}, Point2{3.5, 7.25}, Point2{180, 90}}) {
+        for (const Point2 u : lens_grid(5)) {
+            const Ray from_lens = plain.view.camera->generate_ray(film, u);
+            const Ray from_near = clipped.view.camera->generate_ray(film, u);
+            EXPECT_NEAR(dot(from_near.origin - eye, forward), 1.5, 1e-12);
+            EXPECT_LT(length(from_near.origin - at_depth(from_lens, eye, forward, 1.5)), 1e-12);
+            EXPECT_LT(length(from_near.direction - from_lens.direction), 1e-15);
+            EXPECT_LT(length(at_depth(from_near, eye, forward, 4) - at_depth(from_lens, eye, forward, 4)),
+                      1e-12);
+        }
+    }
+}
+
 TEST(ThinLens, FocusDistanceDefaultsToTheLookAtPoint) {
     const Scene scene =
         camera_scene("{type: thin-lens, eye: [0, 1, 6], look_at: [0.5, 0, -1], lens_radius: 0.5}");
@@ -140,23 +163,17 @@ TEST(ThinLens, ZeroLensRadiusIsThePinhole) {
     }
 }
 
-std::string error_of(const std::string& camera) {
-    try {
-        camera_scene(camera);
-    } catch (const SceneError& e) {
-        return e.message();
-    }
-    return "no error";
-}
+using test::camera_error;
 
 TEST(ThinLens, RejectsMissingOrConflictingApertures) {
-    EXPECT_NE(error_of("{type: thin-lens}").find("needs an aperture"), std::string::npos);
-    EXPECT_NE(error_of("{type: thin-lens, lens_radius: 0.1, f_stop: 2}").find("not both"), std::string::npos);
-    EXPECT_NE(error_of("{type: thin-lens, f_stop: 2}").find("go together"), std::string::npos);
-    EXPECT_NE(error_of("{type: thin-lens, lens_radius: -1}").find("lens_radius"), std::string::npos);
-    EXPECT_NE(error_of("{type: thin-lens, f_stop: 2, focal_length: 6}").find("nearer than f"),
+    EXPECT_NE(camera_error("{type: thin-lens}").find("needs an aperture"), std::string::npos);
+    EXPECT_NE(camera_error("{type: thin-lens, lens_radius: 0.1, f_stop: 2}").find("not both"),
               std::string::npos);
-    EXPECT_NE(error_of("{type: thin-lens, lens_radius: 1, focus_distance: 0}").find("focus_distance"),
+    EXPECT_NE(camera_error("{type: thin-lens, f_stop: 2}").find("go together"), std::string::npos);
+    EXPECT_NE(camera_error("{type: thin-lens, lens_radius: -1}").find("lens_radius"), std::string::npos);
+    EXPECT_NE(camera_error("{type: thin-lens, f_stop: 2, focal_length: 6}").find("nearer than f"),
+              std::string::npos);
+    EXPECT_NE(camera_error("{type: thin-lens, lens_radius: 1, focus_distance: 0}").find("focus_distance"),
               std::string::npos);
 }
 

@@ -66,6 +66,11 @@ ViewParams read_view_params(Params& params, FilmSize film) {
         // The view plane at distance d shows height/2 pixels above the centre: tan(fov/2) = (h/2)/d.
         view.view_distance = 0.5 * film.height / std::tan(radians(fov) / 2);
     }
+    // A near clipping surface, as smallpt's camera has (its rays start 140 units out, past a wall).
+    view.near = params.non_negative("near", 0.0);
+    static const EnumTable<NearShape> near_shapes = {{"plane", NearShape::Plane},
+                                                     {"sphere", NearShape::Sphere}};
+    view.near_shape = params.enumeration("near_shape", near_shapes, NearShape::Plane);
     return view;
 }
 
@@ -74,6 +79,19 @@ Vec3 view_plane_direction(const ViewParams& view, FilmSize size, Point2 film) {
     const double y = view.pixel_size * (0.5 * size.height - film.y);
     const CameraBasis& b = view.basis;
     return x * b.u + y * b.v - view.view_distance * b.w;
+}
+
+Ray ray_from_near_surface(const ViewParams& view, const Vec3& origin, const Vec3& direction, double forward) {
+    const Vec3 unit = normalize(direction);
+    if (view.near == 0) {
+        return {origin, unit};  // no near surface: today's rays, unchanged
+    }
+    if (view.near_shape == NearShape::Sphere) {
+        return {origin + view.near * unit, unit};
+    }
+    // `direction` advances `forward` along the view per unit of t: scaling it by near / forward reaches
+    // the plane exactly, without the rounding of a cosine taken from the normalised direction.
+    return {origin + direction * (view.near / forward), unit};
 }
 
 }  // namespace glint

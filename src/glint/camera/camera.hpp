@@ -67,18 +67,31 @@ struct ViewFrame {
 };
 ViewFrame read_view_frame(Params& params);
 
-// The viewing parameters shared by the perspective cameras: eye, look_at, up, and either the paper's
-// view-plane distance d (in pixels) with zoom, or a vertical field of view. Reads and checks them.
+// Where a camera with a near distance starts its rays: on the plane across the view direction at that
+// distance (what a user expects of a near clipping plane), or at that distance along each ray from
+// where it leaves the eye or lens (a sphere about the eye: smallpt's camera as g++ compiles it).
+enum class NearShape { Plane, Sphere };
+
+// The viewing parameters shared by the perspective cameras: eye, look_at, up, either the paper's
+// view-plane distance d (in pixels) with zoom or a vertical field of view, and the near clipping
+// surface. Reads and checks them.
 struct ViewParams {
     Vec3 eye;
     Vec3 look_at;
     CameraBasis basis;
     double view_distance = 0;  // d, in pixel units
     double pixel_size = 1;     // 1 / zoom
+    double near = 0;           // the near surface's distance from the eye (see NearShape); 0: none
+    NearShape near_shape = NearShape::Plane;
 };
 ViewParams read_view_params(Params& params, FilmSize film);
 // The (not normalised) direction from the eye through the view-plane point of `film`: its component
 // along −w is the view distance d, across it the film offset from the image centre in view-plane units.
 Vec3 view_plane_direction(const ViewParams& view, FilmSize size, Point2 film);
+// The primary ray from `origin` (a point of the plane through the eye across w: the eye or a lens point)
+// along `direction`, whose component along the view direction −w is `forward` (> 0), started where it
+// crosses the view's near surface, so that nothing nearer is seen. The returned direction is unit; with
+// near = 0 the ray is {origin, normalize(direction)}, bit for bit.
+Ray ray_from_near_surface(const ViewParams& view, const Vec3& origin, const Vec3& direction, double forward);
 
 }  // namespace glint

@@ -1,4 +1,4 @@
-// Pinhole {type: pinhole, eye, look_at, up, fov | view_distance + zoom}.
+// Pinhole {type: pinhole, eye, look_at, up, fov | view_distance + zoom, near, near_shape}.
 #include "glint/camera/pinhole.hpp"
 
 #include "glint/params/params.hpp"
@@ -6,7 +6,9 @@
 namespace glint {
 
 Ray PinholeCamera::generate_ray(Point2 film, Point2) const {
-    return {view_.eye, normalize(view_plane_direction(view_, film_, film))};
+    // view_plane_direction advances d = view_distance along the view per unit.
+    return ray_from_near_surface(view_, view_.eye, view_plane_direction(view_, film_, film),
+                                 view_.view_distance);
 }
 
 std::unique_ptr<Camera> PinholeCamera::create(Params& params, const BuildContext&, FilmSize film) {

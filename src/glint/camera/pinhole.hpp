@@ -5,7 +5,9 @@
 namespace glint {
 
 // The virtual pinhole camera of paper §IV: every ray starts at the eye and passes through a point of
-// the view plane at distance d along −w; the plane's pixels are pixel_size (1/zoom) wide.
+// the view plane at distance d along −w; the plane's pixels are pixel_size (1/zoom) wide. With a near
+// distance (`near` > 0) the ray starts where it crosses the near plane across w at `near` from the eye
+// (or, near_shape sphere, at distance `near` along itself).
 class PinholeCamera final : public Camera {
   public:
     PinholeCamera(const ViewParams& view, FilmSize film) : view_(view), film_(film) {}

@@ -1,4 +1,4 @@
-// Thin lens {type: thin-lens, eye, look_at, up, fov | view_distance + zoom,
+// Thin lens {type: thin-lens, eye, look_at, up, fov | view_distance + zoom, near, near_shape,
 //            lens_radius | f_stop + focal_length, focus_distance}.
 #include "glint/camera/thin_lens.hpp"
 
@@ -13,7 +13,8 @@ Ray ThinLensCamera::generate_ray(Point2 film, Point2 lens) const {
     const Vec3 to_focus = view_plane_direction(view_, film_, film) * (focus_distance_ / view_.view_distance);
     const Point2 disk = square_to_disk_concentric(lens);
     const Vec3 lens_offset = lens_radius_ * (disk.x * view_.basis.u + disk.y * view_.basis.v);
-    return {view_.eye + lens_offset, normalize(to_focus - lens_offset)};
+    // The lens offset lies across w, so the direction still advances focus_distance along the view.
+    return ray_from_near_surface(view_, view_.eye + lens_offset, to_focus - lens_offset, focus_distance_);
 }
 
 std::unique_ptr<Camera> ThinLensCamera::create(Params& params, const BuildContext&, FilmSize film) {

@@ -17,6 +17,8 @@ namespace glint {
 //   focal_length    f, in scene units (where the lens focuses parallel rays)
 //   focus_distance  z_f, in scene units along the view direction; default ‖look_at − eye‖. With a
 //                   focal_length it must exceed it (a lens cannot focus nearer than f).
+//   near, near_shape  as the pinhole's: rays start where they cross the plane across w at `near` from
+//                   the lens (the eye's plane), or at distance `near` along themselves.
 class ThinLensCamera final : public Camera {
   public:
     ThinLensCamera(const ViewParams& view, FilmSize film, double lens_radius, double focus_distance)
