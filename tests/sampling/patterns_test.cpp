@@ -270,6 +270,10 @@ TEST(SamplePatterns, PureFunctionOfSeedPixelSampleAndDimension) {
             const SampleKey key{42, 10, 20, s};
             EXPECT_EQ(a->sample_2d(key, 4), b->sample_2d(key, 4)) << name;
             EXPECT_EQ(a->sample_1d(key, 4), b->sample_1d(key, 4)) << name;
+            if (name != "regular" && name != "jittered") {
+                // Every pattern whose x is stratified in n intervals draws its 1-D samples from it.
+                EXPECT_EQ(a->sample_1d(key, 4), a->sample_2d(key, 4).x) << name;
+            }
         }
         // Order of evaluation does not matter.
         EXPECT_EQ(points_of(name, 16, 1, 1, 9, 2), points_of(name, 16, 1, 1, 9, 2)) << name;
