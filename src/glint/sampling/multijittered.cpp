@@ -22,7 +22,7 @@ Point2 MultiJitteredSampler::sample_2d(const SampleHashes& key, std::uint32_t di
     const std::uint64_t pattern = key.pixel_bits(dimension);
     const auto p = static_cast<std::uint32_t>(pattern);
     const auto q = static_cast<std::uint32_t>(pattern >> 32);
-    // Which coarse cell sample `key.sample` fills is shuffled, so sample indices are not ordered in space.
+    // Which coarse cell sample `key.sample()` fills is shuffled, so sample indices are not ordered in space.
     const std::uint32_t s = permute(pattern_index(key, n), n, p * 0x51633e2du);
     const std::uint32_t column = s % m, row = s / m;
     // Inside coarse cell (column, row), the point takes fine column column·r + σ(row) and fine row

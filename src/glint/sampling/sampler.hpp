@@ -31,7 +31,7 @@ class Sampler {
     // rounds up to a square).
     virtual std::uint32_t samples_per_pixel() const = 0;
 
-    // Point `key.sample` of the pattern for pixel (key.pixel_x, key.pixel_y) in `dimension`; in [0,1)².
+    // Point `key.sample()` of the pattern for the key's pixel in `dimension`; in [0,1)².
     virtual Point2 sample_2d(const SampleHashes& key, std::uint32_t dimension) const = 0;
 
     // A 1-D sample; by default the x of the 2-D pattern, which is stratified into n intervals for every
