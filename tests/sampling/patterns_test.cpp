@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 #include <set>
 #include <string>
 #include <vector>
@@ -170,6 +171,83 @@ TEST(SamplePatterns, UnscrambledSobolFirstPointsAreANet) {
     }
 }
 
+TEST(SamplePatterns, SobolSecondDimensionMatchesItsDirectionNumbers) {
+    // The XOR-shift form against the definition: v₁ = 1/2, v_(j+1) = v_j XOR v_j/2, point i the XOR of
+    // v_j over the set bits of i. The scrambled indices the sampler feeds it use all 32 bits.
+    for (std::uint32_t k = 0; k < 4096; ++k) {
+        const std::uint32_t i = k < 2048 ? k : static_cast<std::uint32_t>(hash_values(k));
+        std::uint32_t expected = 0, v = 1u << 31;
+        for (std::uint32_t bits = i; bits != 0; bits >>= 1, v ^= v >> 1) {
+            if (bits & 1u) {
+                expected ^= v;
+            }
+        }
+        ASSERT_EQ(sobol_dimension1(i), expected) << i;
+        ASSERT_EQ(sobol_dimension1_reversed(i), reverse_bits(expected)) << i;
+    }
+}
+
+TEST(SampleHashes, PixelBitsAreSharedByTheSamplesOfAPixelAndNothingElse) {
+    // A pattern's scramble must be one per pixel and dimension: the same for every sample index.
+    const SampleHashes first(SampleKey{7, 3, 4, 0}), later(SampleKey{7, 3, 4, 9});
+    EXPECT_EQ(first.pixel_bits(2), later.pixel_bits(2));
+    EXPECT_EQ(later.sample(), 9u);
+    std::set<std::uint64_t> pixel_bits, sample_bits;
+    for (const SampleKey& key : {SampleKey{7, 3, 4, 0}, SampleKey{8, 3, 4, 0}, SampleKey{7, 4, 3, 0},
+                                 SampleKey{7, 3, 5, 0}, SampleKey{7, 4, 4, 0}}) {
+        for (std::uint32_t dimension = 0; dimension < 4; ++dimension) {
+            pixel_bits.insert(SampleHashes(key).pixel_bits(dimension));
+        }
+    }
+    for (std::uint32_t sample = 0; sample < 4; ++sample) {
+        for (std::uint32_t dimension = 0; dimension < 4; ++dimension) {
+            sample_bits.insert(SampleHashes(SampleKey{7, 3, 4, sample}).sample_bits(dimension));
+        }
+    }
+    EXPECT_EQ(pixel_bits.size(), 20u);  // seed, x, y (and swapping them) and dimension all matter
+    EXPECT_EQ(sample_bits.size(), 16u);
+}
+
+TEST(SamplePatterns, RandomPointsAreUniformOverPixelsSamplesAndDimensions) {
+    // 16 384 points in 16 × 16 cells: under uniformity χ² has mean 255 and standard deviation
+    // √510 ≈ 22.6; 255 + 6σ is not reached by chance.
+    const auto sampler = make_sampler("random", 64);
+    const auto chi2_of = [&](const std::function<Point2(Point2)>& distort) {
+        std::vector<int> counts(256, 0);
+        for (std::uint32_t px = 0; px < 64; ++px) {
+            for (std::uint32_t s = 0; s < 64; ++s) {
+                const SampleHashes key(SampleKey{5, px, px / 8, s});
+                for (std::uint32_t dimension = 0; dimension < 4; ++dimension) {
+                    const Point2 p = distort(sampler->sample_2d(key, dimension));
+                    ++counts[static_cast<size_t>(p.y * 16) * 16 + static_cast<size_t>(p.x * 16)];
+                }
+            }
+        }
+        double chi2 = 0;
+        for (const int c : counts) {
+            chi2 += (c - 64.0) * (c - 64.0) / 64.0;
+        }
+        return chi2;
+    };
+    const double threshold = 255 + 6 * std::sqrt(510.0);
+    EXPECT_LT(chi2_of([](Point2 p) { return p; }), threshold);
+    // The test sees a slight departure from uniformity: x^1.1.
+    EXPECT_GT(chi2_of([](Point2 p) { return Point2{std::pow(p.x, 1.1), p.y}; }), threshold);
+}
+
+TEST(SamplePatterns, HaltonScramblesOnlyTheDigitsItsCountNeeds) {
+    // Scrambling d digits and placing the rest at random keeps the point in the stratum of width 3^−d
+    // that the full 21-digit scramble puts it in; different prefixes are placed independently.
+    for (std::uint32_t d : {1u, 2u, 4u}) {
+        const double strata = std::pow(3.0, d);
+        for (std::uint32_t i = 0; i < strata; ++i) {
+            const double truncated = owen_scrambled_radical_inverse3(i, 99, d);
+            const double full = owen_scrambled_radical_inverse3(i, 99);
+            EXPECT_EQ(std::floor(truncated * strata), std::floor(full * strata)) << "d=" << d << " i=" << i;
+        }
+    }
+}
+
 TEST(SamplePatterns, HaltonStratifiesInBasesTwoAndThree) {
     // The first 2^a·3^b Halton points have one point in each cell of the 2^a × 3^b grid; the Owen
     // scramble keeps it.
@@ -192,6 +270,10 @@ TEST(SamplePatterns, PureFunctionOfSeedPixelSampleAndDimension) {
             const SampleKey key{42, 10, 20, s};
             EXPECT_EQ(a->sample_2d(key, 4), b->sample_2d(key, 4)) << name;
             EXPECT_EQ(a->sample_1d(key, 4), b->sample_1d(key, 4)) << name;
+            if (name != "regular" && name != "jittered") {
+                // Every pattern whose x is stratified in n intervals draws its 1-D samples from it.
+                EXPECT_EQ(a->sample_1d(key, 4), a->sample_2d(key, 4).x) << name;
+            }
         }
         // Order of evaluation does not matter.
         EXPECT_EQ(points_of(name, 16, 1, 1, 9, 2), points_of(name, 16, 1, 1, 9, 2)) << name;

@@ -7,9 +7,13 @@
 
 namespace glint {
 
-// The 64-bit finaliser of SplitMix64 (Steele, Lea & Flood 2014): a bijection with full avalanche.
+// SplitMix64's state increment, 2^64/φ: its multiples spread evenly around the 64-bit ring.
+inline constexpr std::uint64_t kGoldenGamma = 0x9e3779b97f4a7c15ull;
+
+// One step of SplitMix64 (Steele, Lea & Flood 2014) from state x: the increment, then the finaliser, a
+// bijection with full avalanche. mix64(x + k·kGoldenGamma) is the generator's output k + 1 from state x.
 constexpr std::uint64_t mix64(std::uint64_t x) {
-    x += 0x9e3779b97f4a7c15ull;
+    x += kGoldenGamma;
     x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
     x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
     return x ^ (x >> 31);
@@ -27,6 +31,11 @@ constexpr std::uint64_t hash_values(std::uint64_t first, Rest... rest) {
 // The top 53 bits of a hash as a double in [0, 1): exact, never 1.0.
 constexpr double to_unit_double(std::uint64_t bits) {
     return static_cast<double>(bits >> 11) * 0x1.0p-53;
+}
+
+// A 32-bit binary fraction as a double in [0, 1): exact, never 1.0.
+constexpr double bits_to_unit(std::uint32_t bits) {
+    return static_cast<double>(bits) * 0x1.0p-32;
 }
 
 // A bijection of [0, length) chosen by `key`: Kensler's hash-based permutation ("Correlated
@@ -73,6 +82,35 @@ struct SampleKey {
         return hash_values(seed, pixel_x, pixel_y, sample, dimension);
     }
     double uniform(std::uint32_t dimension) const { return to_unit_double(hash(dimension)); }
+};
+
+// A SampleKey with its hashes computed once: the pixel's (seed, x, y) and the sample's. Every number a
+// sampler draws for one dimension is then a single mix64 of one of them plus a multiple of the
+// dimension, i.e. an output of a SplitMix64 stream seeded by the pixel or by the sample, instead of a
+// hash of all five values afresh (issue 13: that hashing was a seventh of a render).
+class SampleHashes {
+  public:
+    // Implicit, so that a sampler can be asked with a plain SampleKey (tests, tools); the renderer builds
+    // one per sample and hands it down the whole path.
+    constexpr SampleHashes(const SampleKey& key)
+        : pixel_(hash_values(key.seed, key.pixel_x, key.pixel_y)),
+          sample_(hash_values(pixel_, key.sample)),
+          sample_index_(key.sample) {}
+
+    constexpr std::uint32_t sample() const { return sample_index_; }
+    // 64 random bits shared by every sample of the pixel in `dimension`: a pattern's scramble.
+    constexpr std::uint64_t pixel_bits(std::uint32_t dimension) const {
+        return mix64(pixel_ + dimension * kGoldenGamma);
+    }
+    // 64 random bits of this sample alone in `dimension`: a jitter, a random point.
+    constexpr std::uint64_t sample_bits(std::uint32_t dimension) const {
+        return mix64(sample_ + dimension * kGoldenGamma);
+    }
+
+  private:
+    std::uint64_t pixel_;   // hash of (seed, pixel_x, pixel_y)
+    std::uint64_t sample_;  // hash of (pixel_, sample)
+    std::uint32_t sample_index_;
 };
 
 // A stream of uniform numbers for one sample: number k is SampleKey::uniform(first_dimension + k).

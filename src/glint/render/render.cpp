@@ -11,8 +11,9 @@ namespace glint {
 
 Rgb render_sample(const World& world, const View& view, int x, int y, std::uint32_t sample,
                   RayCounters& rays) {
-    const SampleKey key{view.settings.seed, static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y),
-                        sample};
+    // Hashed once here; every dimension of the path then costs the sampler one mix.
+    const SampleHashes key(
+        SampleKey{view.settings.seed, static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y), sample});
     const Point2 offset = view.sampler->sample_2d(key, kFilmDimension);
     const Point2 lens = view.sampler->sample_2d(key, kLensDimension);
     const Ray ray = view.camera->generate_ray({x + offset.x, y + offset.y}, lens);

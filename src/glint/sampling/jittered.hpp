@@ -11,12 +11,14 @@ class JitteredSampler final : public Sampler {
     explicit JitteredSampler(std::uint32_t samples_per_pixel);
     std::uint32_t samples_per_pixel() const override { return grid_ * grid_; }
     std::uint32_t grid_size() const { return grid_; }
-    Point2 sample_2d(const SampleKey& key, std::uint32_t dimension) const override;
+    Point2 sample_2d(const SampleHashes& key, std::uint32_t dimension) const override;
     // Jittered in 1-D over all k² intervals (the x of the 2-D pattern has only k strata).
-    double sample_1d(const SampleKey& key, std::uint32_t dimension) const override;
+    double sample_1d(const SampleHashes& key, std::uint32_t dimension) const override;
 
   private:
-    std::uint32_t grid_;  // k
+    std::uint32_t grid_;    // k
+    double inverse_grid_;   // 1/k
+    double inverse_count_;  // 1/k²
 };
 
 }  // namespace glint

@@ -40,16 +40,24 @@ constexpr std::uint32_t sobol_dimension0(std::uint32_t i) {
 }
 
 // Sobol's second dimension (primitive polynomial x + 1: its generator matrix is Pascal's triangle
-// mod 2), as 32 bits of binary fraction. Together with dimension 0 the first 2^k points form a
-// (0, k, 2)-net in base 2: exactly one point in each elementary interval of area 2^−k.
+// mod 2), bit-reversed: bit t of the result is digit t + 1 of the binary fraction. Point i is the XOR of
+// the direction numbers over the set bits j of i, and reversed direction number j is the polynomial
+// (1 + x)^j over GF(2), so the whole sum is i's bit polynomial I(x) shifted to I(x + 1). That shift is
+// five XOR-shifts, halving the problem each time because (x + 1)^(2^k) = x^(2^k) + 1 mod 2: no loop
+// over the bits of i (which after the index scramble has all 32 of them).
+constexpr std::uint32_t sobol_dimension1_reversed(std::uint32_t i) {
+    i ^= (i >> 1) & 0x55555555u;
+    i ^= (i >> 2) & 0x33333333u;
+    i ^= (i >> 4) & 0x0f0f0f0fu;
+    i ^= (i >> 8) & 0x00ff00ffu;
+    i ^= i >> 16;
+    return i;
+}
+
+// Sobol's second dimension as 32 bits of binary fraction. Together with dimension 0 the first 2^k
+// points form a (0, k, 2)-net in base 2: exactly one point in each elementary interval of area 2^−k.
 constexpr std::uint32_t sobol_dimension1(std::uint32_t i) {
-    std::uint32_t result = 0;
-    for (std::uint32_t v = 1u << 31; i != 0; i >>= 1, v ^= v >> 1) {
-        if (i & 1u) {
-            result ^= v;
-        }
-    }
-    return result;
+    return reverse_bits(sobol_dimension1_reversed(i));
 }
 
 // Laine & Karras' hash ("Stratified sampling for stochastic transparency", 2011) in Burley's improved
@@ -64,21 +72,17 @@ constexpr std::uint32_t laine_karras_permutation(std::uint32_t x, std::uint32_t 
     return x;
 }
 
-// Owen-scrambles a 32-bit binary fraction: each digit is flipped or not by a hash of all the digits
-// above it, so every elementary interval is kept whole and only shuffled among its siblings.
+// Owen-scrambles a 32-bit binary fraction given bit-reversed (digit t + 1 in bit t, the form Sobol
+// points are computed in): each digit is flipped or not by a hash of all the digits above it, so every
+// elementary interval is kept whole and only shuffled among its siblings. Returns the fraction in
+// natural order.
+constexpr std::uint32_t owen_scramble_reversed(std::uint32_t reversed_bits, std::uint32_t seed) {
+    return reverse_bits(laine_karras_permutation(reversed_bits, seed));
+}
+
+// Owen-scrambles a 32-bit binary fraction given in natural order.
 constexpr std::uint32_t owen_scramble(std::uint32_t bits, std::uint32_t seed) {
-    return reverse_bits(laine_karras_permutation(reverse_bits(bits), seed));
-}
-
-// A 32-bit binary fraction as a double in [0, 1).
-constexpr double bits_to_unit(std::uint32_t bits) {
-    return static_cast<double>(bits) * 0x1.0p-32;
-}
-
-// The per-pixel, per-dimension scramble key of a pattern: neighbouring pixels (and the film and lens
-// dimensions of one pixel) get unrelated keys. `pattern_tag` keeps different patterns apart.
-inline std::uint64_t pattern_key(const SampleKey& key, std::uint32_t dimension, std::uint32_t pattern_tag) {
-    return hash_values(key.seed, key.pixel_x, key.pixel_y, dimension, pattern_tag);
+    return owen_scramble_reversed(reverse_bits(bits), seed);
 }
 
 }  // namespace glint

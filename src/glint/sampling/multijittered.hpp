@@ -18,7 +18,7 @@ class MultiJitteredSampler final : public Sampler {
     std::uint32_t samples_per_pixel() const override { return columns_ * rows_; }
     std::uint32_t columns() const { return columns_; }  // m
     std::uint32_t rows() const { return rows_; }        // r
-    Point2 sample_2d(const SampleKey& key, std::uint32_t dimension) const override;
+    Point2 sample_2d(const SampleHashes& key, std::uint32_t dimension) const override;
 
   private:
     std::uint32_t columns_, rows_;

@@ -6,15 +6,15 @@
 
 namespace glint {
 
-Point2 NRooksSampler::sample_2d(const SampleKey& key, std::uint32_t dimension) const {
-    const std::uint64_t pattern = pattern_key(key, dimension, 0x2007u);
-    const std::uint32_t i = key.sample % n_;
+Point2 NRooksSampler::sample_2d(const SampleHashes& key, std::uint32_t dimension) const {
+    const std::uint64_t pattern = key.pixel_bits(dimension);
+    const std::uint32_t i = pattern_index(key, n_);
     // Sample i sits in column σ(i) and row τ(i); σ and τ are bijections, hence the n-rooks condition.
     const std::uint32_t column = permute(i, n_, static_cast<std::uint32_t>(pattern));
     const std::uint32_t row = permute(i, n_, static_cast<std::uint32_t>(pattern >> 32));
-    const double jx = key.uniform(2 * dimension);
-    const double jy = key.uniform(2 * dimension + 1);
-    return {std::min((column + jx) / n_, kOneMinusEpsilon), std::min((row + jy) / n_, kOneMinusEpsilon)};
+    const Point2 jitter = unit_pair(key.sample_bits(dimension));
+    return {std::min((column + jitter.x) / n_, kOneMinusEpsilon),
+            std::min((row + jitter.y) / n_, kOneMinusEpsilon)};
 }
 
 }  // namespace glint

@@ -12,7 +12,7 @@ class NRooksSampler final : public Sampler {
   public:
     explicit NRooksSampler(std::uint32_t samples_per_pixel) : n_(std::max(1u, samples_per_pixel)) {}
     std::uint32_t samples_per_pixel() const override { return n_; }
-    Point2 sample_2d(const SampleKey& key, std::uint32_t dimension) const override;
+    Point2 sample_2d(const SampleHashes& key, std::uint32_t dimension) const override;
 
   private:
     std::uint32_t n_;

@@ -4,8 +4,8 @@
 
 namespace glint {
 
-Point2 RandomSampler::sample_2d(const SampleKey& key, std::uint32_t dimension) const {
-    return {key.uniform(2 * dimension), key.uniform(2 * dimension + 1)};
+Point2 RandomSampler::sample_2d(const SampleHashes& key, std::uint32_t dimension) const {
+    return unit_pair(key.sample_bits(dimension));
 }
 
 }  // namespace glint

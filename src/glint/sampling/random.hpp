@@ -8,7 +8,7 @@ class RandomSampler final : public Sampler {
   public:
     explicit RandomSampler(std::uint32_t samples_per_pixel) : spp_(samples_per_pixel) {}
     std::uint32_t samples_per_pixel() const override { return spp_; }
-    Point2 sample_2d(const SampleKey& key, std::uint32_t dimension) const override;
+    Point2 sample_2d(const SampleHashes& key, std::uint32_t dimension) const override;
 
   private:
     std::uint32_t spp_;

@@ -21,18 +21,18 @@ std::uint32_t square_grid_size(std::uint32_t samples_per_pixel) {
 RegularSampler::RegularSampler(std::uint32_t samples_per_pixel)
     : grid_(square_grid_size(samples_per_pixel)) {}
 
-Point2 RegularSampler::sample_2d(const SampleKey& key, std::uint32_t dimension) const {
+Point2 RegularSampler::sample_2d(const SampleHashes& key, std::uint32_t dimension) const {
     const std::uint32_t n = grid_ * grid_;
-    const auto scramble = static_cast<std::uint32_t>(pattern_key(key, dimension, 0x7e61u));
-    const std::uint32_t cell = permute(key.sample % n, n, scramble);
+    const auto scramble = static_cast<std::uint32_t>(key.pixel_bits(dimension));
+    const std::uint32_t cell = permute(pattern_index(key, n), n, scramble);
     const double inv = 1.0 / grid_;
     return {(cell % grid_ + 0.5) * inv, (cell / grid_ + 0.5) * inv};
 }
 
-double RegularSampler::sample_1d(const SampleKey& key, std::uint32_t dimension) const {
+double RegularSampler::sample_1d(const SampleHashes& key, std::uint32_t dimension) const {
     const std::uint32_t n = grid_ * grid_;
-    const auto scramble = static_cast<std::uint32_t>(pattern_key(key, dimension, 0x7e62u));
-    return (permute(key.sample % n, n, scramble) + 0.5) / n;
+    const auto scramble = static_cast<std::uint32_t>(key.pixel_bits(dimension) >> 32);
+    return (permute(pattern_index(key, n), n, scramble) + 0.5) / n;
 }
 
 }  // namespace glint

@@ -13,9 +13,9 @@ class RegularSampler final : public Sampler {
     explicit RegularSampler(std::uint32_t samples_per_pixel);
     std::uint32_t samples_per_pixel() const override { return grid_ * grid_; }
     std::uint32_t grid_size() const { return grid_; }
-    Point2 sample_2d(const SampleKey& key, std::uint32_t dimension) const override;
+    Point2 sample_2d(const SampleHashes& key, std::uint32_t dimension) const override;
     // The centres of n = k² equal intervals: regular in 1-D too.
-    double sample_1d(const SampleKey& key, std::uint32_t dimension) const override;
+    double sample_1d(const SampleHashes& key, std::uint32_t dimension) const override;
 
   private:
     std::uint32_t grid_;  // k

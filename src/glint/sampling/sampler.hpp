@@ -6,6 +6,9 @@
 // "Dimension" numbers the independent 2-D patterns one camera path consumes: 0 is the position on the
 // film, 1 the position on the lens, 2 and up are used by lights and materials. Each dimension (and each
 // pixel) gets its own scramble, so patterns are not correlated across dimensions or neighbours.
+// Samplers are asked with SampleHashes, the key's hashes computed once per sample (a plain SampleKey
+// converts), and draw each dimension's numbers from them with one mix64: the per-sample cost of a
+// pattern is that and its own arithmetic.
 #pragma once
 
 #include <cstdint>
@@ -28,28 +31,39 @@ class Sampler {
     // rounds up to a square).
     virtual std::uint32_t samples_per_pixel() const = 0;
 
-    // Point `key.sample` of the pattern for pixel (key.pixel_x, key.pixel_y) in `dimension`; in [0,1)².
-    virtual Point2 sample_2d(const SampleKey& key, std::uint32_t dimension) const = 0;
+    // Point `key.sample()` of the pattern for the key's pixel in `dimension`; in [0,1)².
+    virtual Point2 sample_2d(const SampleHashes& key, std::uint32_t dimension) const = 0;
 
     // A 1-D sample; by default the x of the 2-D pattern, which is stratified into n intervals for every
     // pattern but random (regular and jittered, whose x has only √n strata, override this).
-    virtual double sample_1d(const SampleKey& key, std::uint32_t dimension) const {
+    virtual double sample_1d(const SampleHashes& key, std::uint32_t dimension) const {
         return sample_2d(key, dimension).x;
     }
 };
 
+// Two uniform numbers in [0, 1) from 64 random bits, 32 bits each: finer than any stratum needs.
+constexpr Point2 unit_pair(std::uint64_t bits) {
+    return {bits_to_unit(static_cast<std::uint32_t>(bits)),
+            bits_to_unit(static_cast<std::uint32_t>(bits >> 32))};
+}
+
+// The index of the key's sample within a pattern of n points; the renderer asks only for indices below
+// n, so the modulo that wraps larger ones is never paid there.
+constexpr std::uint32_t pattern_index(const SampleHashes& key, std::uint32_t n) {
+    return key.sample() < n ? key.sample() : key.sample() % n;
+}
+
 // The samples one camera path draws, in order: a thin cursor over (sampler, key, dimension).
 class SampleStream {
   public:
-    SampleStream(const Sampler& sampler, const SampleKey& key, std::uint32_t first_dimension)
+    SampleStream(const Sampler& sampler, const SampleHashes& key, std::uint32_t first_dimension)
         : sampler_(&sampler), key_(key), dimension_(first_dimension) {}
     Point2 next_2d() { return sampler_->sample_2d(key_, dimension_++); }
     double next_1d() { return sampler_->sample_1d(key_, dimension_++); }
-    const SampleKey& key() const { return key_; }
 
   private:
     const Sampler* sampler_;
-    SampleKey key_;
+    SampleHashes key_;
     std::uint32_t dimension_;
 };
 

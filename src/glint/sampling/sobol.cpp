@@ -4,13 +4,34 @@
 
 namespace glint {
 
-Point2 SobolSampler::sample_2d(const SampleKey& key, std::uint32_t dimension) const {
-    const std::uint64_t pattern = pattern_key(key, dimension, 0x5011u);
-    const std::uint64_t seeds = hash_values(pattern, 1);
-    const std::uint32_t index = owen_scramble(key.sample, static_cast<std::uint32_t>(pattern));
-    const std::uint32_t x = owen_scramble(sobol_dimension0(index), static_cast<std::uint32_t>(seeds));
-    const std::uint32_t y = owen_scramble(sobol_dimension1(index), static_cast<std::uint32_t>(seeds >> 32));
+namespace {
+
+// The sample's index in the pixel's aligned block of 2^32 Sobol points, Owen-scrambled by the low half
+// of `seeds`.
+std::uint32_t scrambled_index(const SampleHashes& key, std::uint64_t seeds) {
+    return owen_scramble(key.sample(), static_cast<std::uint32_t>(seeds));
+}
+
+}  // namespace
+
+Point2 SobolSampler::sample_2d(const SampleHashes& key, std::uint32_t dimension) const {
+    const std::uint64_t seeds = key.pixel_bits(dimension);
+    const std::uint32_t index = scrambled_index(key, seeds);
+    // The point's two seeds, drawn while the index is scrambled.
+    const std::uint64_t point_seeds = mix64(seeds);
+    // Both dimensions are computed bit-reversed (dimension 0 reversed is the index itself) and
+    // reversed once, inside the scramble.
+    const std::uint32_t x = owen_scramble_reversed(index, static_cast<std::uint32_t>(point_seeds));
+    const std::uint32_t y = owen_scramble_reversed(sobol_dimension1_reversed(index),
+                                                   static_cast<std::uint32_t>(point_seeds >> 32));
     return {bits_to_unit(x), bits_to_unit(y)};
+}
+
+double SobolSampler::sample_1d(const SampleHashes& key, std::uint32_t dimension) const {
+    // sample_2d's x without its y: the point's first dimension, stratified in n intervals.
+    const std::uint64_t seeds = key.pixel_bits(dimension);
+    const std::uint32_t index = scrambled_index(key, seeds);
+    return bits_to_unit(owen_scramble_reversed(index, static_cast<std::uint32_t>(mix64(seeds))));
 }
 
 }  // namespace glint
