@@ -51,17 +51,20 @@ def convert_rtiow(data, defocus=True):
         "# metal (albedo, fuzz) → fuzzy-metal (the book's lobe: the mirror direction plus fuzz × a random",
         "# unit vector, absorbed below the surface), dielectric → dielectric with `fresnel: schlick` (the",
         "# book's reflect/refract choice). The book's integrator is a path tracer without light sampling;",
-        "# glint's path tracer adds next-event estimation with MIS at the matte spheres, which converges to",
-        "# the same image (fuzzy-metal and glass are sampled like the book, as delta lobes). Not the book's:",
+        "# so is glint's here: it spends no shadow ray on a gradient sky, which BSDF sampling follows as well",
+        "# (fuzzy-metal and glass are sampled like the book, as delta lobes). It ends dim paths by Russian",
+        "# roulette, unbiased, where the book runs every path to max_depth. Not the book's:",
         "# its t_min = 0.001 (glint offsets ray origins by the hit's error bound) and its gamma-2 output.",
         "# Full quality (the book's settings):",
         f"#   glint render examples/rtiow-final.yaml --width {width} --height {height} --spp {cam['samples_per_pixel']}"
         f" --max-depth {cam['max_depth'] - 1} -o rtiow-final.png",
-        "# Pixels: the book's independent uniform offsets in the pixel square (sampler random, box pixels).",
+        "# Pixels: box pixels, as the book's uniform offsets in the pixel square; glint's default sampler",
+        "# (sobol) stratifies them, which converges to the same image with less noise (`--sampler random`",
+        "# draws them independently, as the book does).",
         f"# Depth: the book's max_depth {cam['max_depth']} returns black for the ray after {cam['max_depth'] - 1} bounces;"
         f" glint's max_depth counts",
         f"# bounces (1 = direct light only), so the book's {cam['max_depth']} is glint's {cam['max_depth'] - 1}.",
-        f"render: {{width: 200, height: 113, samples: 4, sampler: random, integrator: path,"
+        f"render: {{width: 200, height: 113, samples: 4, integrator: path,"
         f" max_depth: {cam['max_depth'] - 1}}}",
         f"camera: {{type: thin-lens, eye: {vec(cam['lookfrom'])}, look_at: {vec(cam['lookat'])}, up: {vec(cam['vup'])},"
         f" fov: {num(cam['vfov'])}, lens_radius: {num(lens_radius)}, focus_distance: {num(cam['focus_dist'])}}}"
