@@ -37,8 +37,8 @@ std::optional<ShapeSample> Sphere::sample_area(Point2 u) const {
     // Uniform on the sphere: z uniform in [−1, 1] (Archimedes' hat-box theorem), φ uniform.
     const double z = 1 - 2 * u.x;
     const double r = safe_sqrt(1 - z * z);
-    const double phi = 2 * kPi * u.y;
-    const Vec3 n{r * std::cos(phi), r * std::sin(phi), z};
+    const SinCos phi = sincos_turns(u.y);
+    const Vec3 n{r * phi.cos, r * phi.sin, z};
     return ShapeSample{center_ + radius_ * n, n, 1 / area()};
 }
 
@@ -71,9 +71,9 @@ std::optional<SeenSample> Sphere::sample_seen_from(const Vec3& ref, Point2 u) co
     const double sin2_theta = omc * (2 - omc);
     const double cos_alpha = sin2_theta / sin_max + cos_theta * safe_sqrt(1 - sin2_theta / sin2_max);
     const double sin_alpha = safe_sqrt(1 - cos_alpha * cos_alpha);
-    const double phi = 2 * kPi * u.y;
+    const SinCos phi = sincos_turns(u.y);
     const Frame frame = Frame::from_normal(to_center / std::sqrt(d2));
-    const Vec3 normal = frame.to_world({-sin_alpha * std::cos(phi), -sin_alpha * std::sin(phi), -cos_alpha});
+    const Vec3 normal = frame.to_world({-sin_alpha * phi.cos, -sin_alpha * phi.sin, -cos_alpha});
     const Vec3 point = center_ + radius_ * normal;
     const Vec3 to_point = point - ref;
     const double distance = length(to_point);
