@@ -23,8 +23,7 @@ bool Sphere::intersect(const Ray& ray, double t_max, Hit& hit) const {
     hit.point = center_ + normal * radius_;
     hit.normal = normal;
     hit.shading_normal = normal;
-    const double phi = std::atan2(normal.z, normal.x);
-    hit.uv = {(phi < 0 ? phi + 2 * kPi : phi) / (2 * kPi), std::acos(std::clamp(normal.y, -1.0, 1.0)) / kPi};
+    hit.uv = kUvFromSphereNormal;  // surface_uv computes sphere_uv(normal) if a texture asks
     hit.error = kHitRelativeError * (max_component(abs(center_)) + radius_);
     return true;
 }
