@@ -56,6 +56,7 @@ bool BvhAccelerator::intersect(const Ray& ray, double t_max, Hit& hit) const {
     // other hit: its Hit is filled at the end.
     const ShapeList* nearest_list = nullptr;
     std::uint32_t nearest_sphere = 0;
+    double nearest_sphere_t = 0;
     const auto test = [&](const ShapeList& list, std::uint32_t i, double& t_limit) {
         const LeafSphere& sphere = list.spheres[i];
         if (sphere.radius > 0) {
@@ -64,6 +65,7 @@ bool BvhAccelerator::intersect(const Ray& ray, double t_max, Hit& hit) const {
                 return false;
             }
             t_limit = t;
+            nearest_sphere_t = t;
             nearest_list = &list;
             nearest_sphere = i;
             return true;
@@ -76,7 +78,6 @@ bool BvhAccelerator::intersect(const Ray& ray, double t_max, Hit& hit) const {
         nearest_list = nullptr;
         return true;
     };
-    const double t_max_given = t_max;
     bool found = false;
     for (std::uint32_t i = 0; i < direct_.size(); ++i) {
         found |= test(direct_, i, t_max);
@@ -92,10 +93,9 @@ bool BvhAccelerator::intersect(const Ray& ray, double t_max, Hit& hit) const {
             });
     }
     if (nearest_list != nullptr) {
-        // The same computation finds the same t, now with the normal.
-        if (!nearest_list->shapes[nearest_sphere]->intersect(ray, t_max_given, hit)) {
-            return false;  // cannot happen
-        }
+        // The sphere's own intersect would find the same t; it fills the rest of the Hit from it.
+        static_cast<const Sphere*>(nearest_list->shapes[nearest_sphere])
+            ->fill_hit(ray, nearest_sphere_t, hit);
         hit.primitive = nearest_list->scene_index[nearest_sphere];
     }
     return found;

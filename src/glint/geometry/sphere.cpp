@@ -16,6 +16,11 @@ bool Sphere::intersect(const Ray& ray, double t_max, Hit& hit) const {
     if (!sphere_hit_t(center_, radius_, ray, t_max, t)) {
         return false;
     }
+    fill_hit(ray, t, hit);
+    return true;
+}
+
+void Sphere::fill_hit(const Ray& ray, double t, Hit& hit) const {
     // Project the point back onto the sphere: its error is then a few ulps of |C| + R whatever t was.
     const Vec3 from_center = ray.at(t) - center_;
     const Vec3 normal = from_center / length(from_center);
@@ -25,7 +30,6 @@ bool Sphere::intersect(const Ray& ray, double t_max, Hit& hit) const {
     hit.shading_normal = normal;
     hit.uv = kUvFromSphereNormal;  // surface_uv computes sphere_uv(normal) if a texture asks
     hit.error = kHitRelativeError * (max_component(abs(center_)) + radius_);
-    return true;
 }
 
 bool Sphere::occluded(const Ray& ray, double t_max) const {
