@@ -39,6 +39,68 @@ TEST(Bvh, RandomSpheresGiveTheListsHits) {
     expect_same_hits(list, bvh, inside, ptrs);
 }
 
+// Every field of two hit records, bit for bit: the same primitive's intersect must have filled both.
+void expect_identical_hits(const Hit& a, const Hit& b, bool mesh) {
+    const auto same_bits = [](const Vec3& x, const Vec3& y) {
+        return x.x == y.x && x.y == y.y && x.z == y.z;
+    };
+    EXPECT_EQ(a.primitive, b.primitive);
+    EXPECT_EQ(a.t, b.t);
+    EXPECT_TRUE(same_bits(a.point, b.point));
+    EXPECT_TRUE(same_bits(a.normal, b.normal));
+    EXPECT_TRUE(same_bits(a.shading_normal, b.shading_normal));
+    EXPECT_EQ(surface_uv(a).x, surface_uv(b).x);
+    EXPECT_EQ(surface_uv(a).y, surface_uv(b).y);
+    EXPECT_EQ(a.error, b.error);
+    if (mesh) {
+        EXPECT_EQ(a.element, b.element);  // other shapes leave `element` as it was
+    }
+}
+
+// Small scenes skip the tree and test every shape; the answers must be the very same bits as the
+// tree's, whichever shapes are mixed (inline spheres, virtual calls, planes kept apart).
+TEST(Bvh, SmallScenesTestedFlatGiveTheTreesHitsBitForBit) {
+    for (int scene = 0; scene < 3; ++scene) {
+        auto shapes = test::random_spheres(12, 40 + scene);
+        if (scene >= 1) {
+            shapes.push_back(std::make_unique<Mesh>(test::tessellated_sphere(2, 2.0, {1, 2, 3})));
+            shapes.push_back(std::make_unique<Rectangle>(Vec3{-5, -5, 4}, Vec3{10, 0, 0}, Vec3{0, 10, 0}));
+        }
+        if (scene == 2) {
+            shapes.push_back(std::make_unique<Plane>(Vec3{0, -9, 0}, Vec3{0, 1, 0}));
+        }
+        const auto ptrs = pointers(shapes);
+        const BvhAccelerator flat(ptrs, ptrs.size());
+        const BvhAccelerator tree(ptrs, 0);
+        EXPECT_EQ(flat.flat_count(), ptrs.size());
+        EXPECT_EQ(tree.flat_count(), tree.unbounded_count());
+        std::mt19937_64 rng(scene);
+        int hits = 0;
+        for (int i = 0; i < 4000; ++i) {
+            // From anywhere in the cloud towards a point in the box of a random shape: most rays hit.
+            const Bounds3 target = ptrs[rng() % (ptrs.size() - (scene == 2 ? 1 : 0))]->bounds();
+            const Vec3 origin = random_in_box(rng, {-10, -10, -10}, {10, 10, 10});
+            const Ray ray{origin, normalize(random_in_box(rng, target.lo, target.hi) - origin)};
+            Hit a, b;
+            const bool found = flat.intersect(ray, kInf, a);
+            ASSERT_EQ(found, tree.intersect(ray, kInf, b));
+            EXPECT_EQ(flat.occluded(ray, 5.0), tree.occluded(ray, 5.0));
+            if (found) {
+                ++hits;
+                expect_identical_hits(a, b, dynamic_cast<const Mesh*>(ptrs[a.primitive]) != nullptr);
+                EXPECT_TRUE(flat.occluded(ray, a.t * (1 + 1e-9)));
+                EXPECT_FALSE(flat.occluded(ray, a.t * (1 - 1e-9)));
+            }
+        }
+        EXPECT_GT(hits, 2000) << scene;  // the comparison means something only if rays hit
+    }
+    // The default: few shapes go flat, many to the tree.
+    const auto few = test::random_spheres(static_cast<int>(BvhAccelerator::kFlatMaxShapes), 1);
+    EXPECT_EQ(BvhAccelerator(pointers(few)).flat_count(), few.size());
+    const auto many = test::random_spheres(static_cast<int>(BvhAccelerator::kFlatMaxShapes) + 1, 1);
+    EXPECT_EQ(BvhAccelerator(pointers(many)).flat_count(), 0u);
+}
+
 TEST(Bvh, PlanesAreKeptOutsideTheTreeAndStillHit) {
     auto shapes = test::random_spheres(300, 3);
     shapes.push_back(std::make_unique<Plane>(Vec3{0, -11, 0}, Vec3{0, 1, 0}));

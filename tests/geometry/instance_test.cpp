@@ -56,6 +56,19 @@ TEST(Instance, ScaledSphereIsTheEllipsoid) {
     EXPECT_GE(b.hi.z, c.z + 0.5 - 1e-12);
 }
 
+TEST(Instance, SphereUvIsTheSpheresOwnNotTheWorldNormals) {
+    // A unit sphere turned 90° about z: the world's +x is the sphere's −y, its south pole (v = 1).
+    const Instance turned(std::make_unique<Sphere>(Vec3{}, 1), Transform::rotate({0, 0, 1}, 90));
+    Hit hit;
+    ASSERT_TRUE(turned.intersect({{5, 0, 0}, {-1, 0, 0}}, kInf, hit));
+    EXPECT_FALSE(uv_deferred(hit));  // resolved before the normal left the sphere's space
+    EXPECT_NEAR(surface_uv(hit).y, 1.0, 1e-7);
+    // The world's +z is the sphere's own +z: u = ¼, v = ½.
+    ASSERT_TRUE(turned.intersect({{0, 0, 5}, {0, 0, -1}}, kInf, hit));
+    EXPECT_NEAR(surface_uv(hit).x, 0.25, 1e-12);
+    EXPECT_NEAR(surface_uv(hit).y, 0.5, 1e-12);
+}
+
 TEST(Instance, RotatedBox) {
     // [−1, 1]³ turned 45° about z: a ray along +x at y = 0.5 enters through the face whose local
     // normal is +y (world (−1, 1, 0)/√2) where −x sin45° + 0.5 cos45° = 1, i.e. x = 0.5 − √2.

@@ -156,8 +156,8 @@ inline int check_random_hits(const Shape& shape, const std::function<double(cons
         EXPECT_NEAR(distance(hit.normal, expected_normal(hit.point)), 0, 1e-7)
             << "ray " << i << " hits " << hit.point << " with normal " << hit.normal;
         EXPECT_EQ(hit.shading_normal, hit.normal);
-        EXPECT_TRUE(hit.uv.x >= 0 && hit.uv.x <= 1 && hit.uv.y >= 0 && hit.uv.y <= 1)
-            << "uv " << hit.uv.x << ", " << hit.uv.y;
+        const Point2 uv = surface_uv(hit);
+        EXPECT_TRUE(uv.x >= 0 && uv.x <= 1 && uv.y >= 0 && uv.y <= 1) << "uv " << uv.x << ", " << uv.y;
     }
     EXPECT_GT(hits, rays / 10) << "too few rays hit the shape for the test to mean anything";
     return hits;

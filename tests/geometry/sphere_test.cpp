@@ -16,6 +16,38 @@ TEST(Sphere, HitFromOutsideTakesTheNearRoot) {
     EXPECT_EQ(hit.normal, Vec3(0, 0, 1));
 }
 
+TEST(Sphere, UvIsLongitudeAboutYAndColatitudeFromY) {
+    // u = φ/2π with φ from +x towards +z, v = θ/π from +y: known at the axes and at one oblique point.
+    const Sphere s({1, 2, 3}, 2);
+    const auto uv_from = [&](const Vec3& direction) {
+        Hit hit;
+        EXPECT_TRUE(s.intersect({Vec3{1, 2, 3} + 10 * direction, -direction}, kInf, hit));
+        return surface_uv(hit);
+    };
+    EXPECT_NEAR(uv_from({1, 0, 0}).x, 0.0, 1e-15);
+    EXPECT_NEAR(uv_from({1, 0, 0}).y, 0.5, 1e-15);
+    EXPECT_NEAR(uv_from({0, 0, 1}).x, 0.25, 1e-15);
+    EXPECT_NEAR(uv_from({-1, 0, 0}).x, 0.5, 1e-15);
+    EXPECT_NEAR(uv_from({0, 0, -1}).x, 0.75, 1e-15);
+    EXPECT_NEAR(uv_from({0, 1, 0}).y, 0.0, 1e-7);  // acos near 1 amplifies the normal's rounding
+    EXPECT_NEAR(uv_from({0, -1, 0}).y, 1.0, 1e-7);
+    // 45° below +y, halfway from +z to −x: φ = 135°, θ = 135°.
+    const Point2 oblique = uv_from(normalize(Vec3{-0.5, -std::sqrt(0.5), 0.5}));
+    EXPECT_NEAR(oblique.x, 0.375, 1e-14);
+    EXPECT_NEAR(oblique.y, 0.75, 1e-14);
+}
+
+TEST(Sphere, UvIsComputedOnDemandAndOverwrittenByALaterHit) {
+    // The sphere leaves the marker; a hit record then reused by a nearer shape gets that shape's uv.
+    const Sphere s({0, 0, 0}, 1);
+    Hit hit;
+    ASSERT_TRUE(s.intersect({{0, 0, 5}, {0, 0, -1}}, kInf, hit));
+    EXPECT_TRUE(uv_deferred(hit));
+    hit.uv = {0.1, 0.2};
+    EXPECT_FALSE(uv_deferred(hit));
+    EXPECT_EQ(surface_uv(hit).x, 0.1);
+}
+
 TEST(Sphere, TIsInUnitsOfTheDirection) {
     const Sphere s({0, 0, 0}, 1);
     Hit hit;

@@ -7,7 +7,14 @@
 
 namespace glint {
 
-BvhAccelerator::BvhAccelerator(std::span<const Shape* const> shapes) : all_(shapes.begin(), shapes.end()) {
+void BvhAccelerator::ShapeList::add(const Shape* shape, std::uint32_t index) {
+    const auto* sphere = dynamic_cast<const Sphere*>(shape);
+    spheres.push_back(sphere != nullptr ? LeafSphere{sphere->center(), sphere->radius()} : LeafSphere{});
+    shapes.push_back(shape);
+    scene_index.push_back(index);
+}
+
+BvhAccelerator::BvhAccelerator(std::span<const Shape* const> shapes, std::size_t flat_max_shapes) {
     const auto start = std::chrono::steady_clock::now();
     std::vector<Bounds3> boxes;
     std::vector<std::uint32_t> bounded;
@@ -25,87 +32,96 @@ BvhAccelerator::BvhAccelerator(std::span<const Shape* const> shapes) : all_(shap
             boxes.push_back(b);
             bounded.push_back(static_cast<std::uint32_t>(i));
         } else if (!b.empty()) {
-            direct_.push_back(static_cast<std::uint32_t>(i));
+            direct_.add(shapes[i], static_cast<std::uint32_t>(i));
         }
     }
     unbounded_count_ = direct_.size();
-    if (boxes.size() == 1) {
-        direct_.push_back(bounded[0]);
+    // A lone bounded shape (a scene of one mesh) is never worth a tree of one leaf.
+    if (boxes.size() <= std::max<std::size_t>(flat_max_shapes, 1)) {
+        for (std::uint32_t i : bounded) {
+            direct_.add(shapes[i], i);
+        }
         boxes.clear();
         bounded.clear();
     }
     bvh_.build(boxes);
     for (std::uint32_t position : bvh_.primitive_order()) {
-        const Shape* shape = shapes[bounded[position]];
-        shapes_.push_back(shape);
-        shape_index_.push_back(bounded[position]);
-        const auto* sphere = dynamic_cast<const Sphere*>(shape);
-        leaf_spheres_.push_back(sphere != nullptr ? LeafSphere{sphere->center(), sphere->radius()}
-                                                  : LeafSphere{});
+        leaves_.add(shapes[bounded[position]], bounded[position]);
     }
     build_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 bool BvhAccelerator::intersect(const Ray& ray, double t_max, Hit& hit) const {
-    bool found = false;
-    for (std::uint32_t i : direct_) {
-        if (all_[i]->intersect(ray, t_max, hit)) {
-            t_max = hit.t;
-            hit.primitive = i;
-            found = true;
-        }
-    }
-    // The nearest sphere so far, if it is nearer than every other hit: its Hit is filled at the end.
-    constexpr std::uint32_t kNone = ~0u;
-    std::uint32_t nearest_sphere = kNone;
-    const double t_max_given = t_max;
-    found |= bvh_.intersect(ray, t_max, [&](std::uint32_t first, std::uint32_t count, double& t_limit, auto) {
-        bool any = false;
-        for (std::uint32_t i = first; i < first + count; ++i) {
-            const LeafSphere& sphere = leaf_spheres_[i];
-            if (sphere.radius > 0) {
-                double t = 0;
-                if (sphere_hit_t(sphere.center, sphere.radius, ray, t_limit, t)) {
-                    t_limit = t;
-                    nearest_sphere = i;
-                    any = true;
-                }
-            } else if (shapes_[i]->intersect(ray, t_limit, hit)) {
-                t_limit = hit.t;
-                hit.primitive = shape_index_[i];
-                nearest_sphere = kNone;
-                any = true;
+    // The nearest sphere so far (entry `nearest_sphere` of `nearest_list`), if it is nearer than every
+    // other hit: its Hit is filled at the end.
+    const ShapeList* nearest_list = nullptr;
+    std::uint32_t nearest_sphere = 0;
+    double nearest_sphere_t = 0;
+    const auto test = [&](const ShapeList& list, std::uint32_t i, double& t_limit) {
+        const LeafSphere& sphere = list.spheres[i];
+        if (sphere.radius > 0) {
+            double t = 0;
+            if (!sphere_hit_t(sphere.center, sphere.radius, ray, t_limit, t)) {
+                return false;
             }
+            t_limit = t;
+            nearest_sphere_t = t;
+            nearest_list = &list;
+            nearest_sphere = i;
+            return true;
         }
-        return any;
-    });
-    if (nearest_sphere != kNone) {
-        // The same computation finds the same t, now with the normal and uv.
-        if (!shapes_[nearest_sphere]->intersect(ray, t_max_given, hit)) {
-            return false;  // cannot happen
+        if (!list.shapes[i]->intersect(ray, t_limit, hit)) {
+            return false;
         }
-        hit.primitive = shape_index_[nearest_sphere];
+        t_limit = hit.t;
+        hit.primitive = list.scene_index[i];
+        nearest_list = nullptr;
+        return true;
+    };
+    bool found = false;
+    for (std::uint32_t i = 0; i < direct_.size(); ++i) {
+        found |= test(direct_, i, t_max);
+    }
+    if (leaves_.size() > 0) {
+        found |=
+            bvh_.intersect(ray, t_max, [&](std::uint32_t first, std::uint32_t count, double& t_limit, auto) {
+                bool any = false;
+                for (std::uint32_t i = first; i < first + count; ++i) {
+                    any |= test(leaves_, i, t_limit);
+                }
+                return any;
+            });
+    }
+    if (nearest_list != nullptr) {
+        // The sphere's own intersect would find the same t; it fills the rest of the Hit from it.
+        static_cast<const Sphere*>(nearest_list->shapes[nearest_sphere])
+            ->fill_hit(ray, nearest_sphere_t, hit);
+        hit.primitive = nearest_list->scene_index[nearest_sphere];
     }
     return found;
 }
 
 bool BvhAccelerator::occluded(const Ray& ray, double t_max) const {
-    for (std::uint32_t i : direct_) {
-        if (all_[i]->occluded(ray, t_max)) {
+    const auto occludes = [&](const ShapeList& list, std::uint32_t i, double t_limit) {
+        const LeafSphere& sphere = list.spheres[i];
+        return sphere.radius > 0 ? sphere_occludes(sphere.center, sphere.radius, ray, t_limit)
+                                 : list.shapes[i]->occluded(ray, t_limit);
+    };
+    for (std::uint32_t i = 0; i < direct_.size(); ++i) {
+        if (occludes(direct_, i, t_max)) {
             return true;
         }
     }
-    return bvh_.occluded(
-        ray, t_max, [&](std::uint32_t first, std::uint32_t count, double t_limit, auto /*avx2*/) {
-            for (std::uint32_t i = first; i < first + count; ++i) {
-                const LeafSphere& sphere = leaf_spheres_[i];
-                if (sphere.radius > 0 ? sphere_occludes(sphere.center, sphere.radius, ray, t_limit)
-                                      : shapes_[i]->occluded(ray, t_limit)) {
-                    return true;
-                }
-            }
-            return false;
-        });
+    return leaves_.size() > 0 &&
+           bvh_.occluded(ray, t_max,
+                         [&](std::uint32_t first, std::uint32_t count, double t_limit, auto /*avx2*/) {
+                             for (std::uint32_t i = first; i < first + count; ++i) {
+                                 if (occludes(leaves_, i, t_limit)) {
+                                     return true;
+                                 }
+                             }
+                             return false;
+                         });
 }
 
 }  // namespace glint

@@ -57,8 +57,8 @@ bool Disk::occluded(const Ray& ray, double t_max) const {
 std::optional<ShapeSample> Disk::sample_area(Point2 u) const {
     // Uniform by area: the radius squared is uniform between inner² and outer², the angle uniform.
     const double r = std::sqrt(lerp(u.x, inner_radius_ * inner_radius_, radius_ * radius_));
-    const double phi = 2 * kPi * u.y;
-    const Vec3 p = center_ + frame_.to_world({r * std::cos(phi), r * std::sin(phi), 0});
+    const SinCos phi = sincos_turns(u.y);
+    const Vec3 p = center_ + frame_.to_world({r * phi.cos, r * phi.sin, 0});
     return ShapeSample{p, frame_.n, 1 / area()};
 }
 

@@ -24,6 +24,7 @@ bool Instance::intersect(const Ray& ray, double t_max, Hit& hit) const {
         return false;
     }
     hit = local;
+    hit.uv = surface_uv(local);  // from the shape's own normal, before it is turned to world space
     hit.point = to_world_.point(local.point);
     hit.normal = normalize(to_world_.normal(local.normal));
     hit.shading_normal = normalize(to_world_.normal(local.shading_normal));

@@ -16,6 +16,11 @@ bool Sphere::intersect(const Ray& ray, double t_max, Hit& hit) const {
     if (!sphere_hit_t(center_, radius_, ray, t_max, t)) {
         return false;
     }
+    fill_hit(ray, t, hit);
+    return true;
+}
+
+void Sphere::fill_hit(const Ray& ray, double t, Hit& hit) const {
     // Project the point back onto the sphere: its error is then a few ulps of |C| + R whatever t was.
     const Vec3 from_center = ray.at(t) - center_;
     const Vec3 normal = from_center / length(from_center);
@@ -23,10 +28,8 @@ bool Sphere::intersect(const Ray& ray, double t_max, Hit& hit) const {
     hit.point = center_ + normal * radius_;
     hit.normal = normal;
     hit.shading_normal = normal;
-    const double phi = std::atan2(normal.z, normal.x);
-    hit.uv = {(phi < 0 ? phi + 2 * kPi : phi) / (2 * kPi), std::acos(std::clamp(normal.y, -1.0, 1.0)) / kPi};
+    hit.uv = kUvFromSphereNormal;  // surface_uv computes sphere_uv(normal) if a texture asks
     hit.error = kHitRelativeError * (max_component(abs(center_)) + radius_);
-    return true;
 }
 
 bool Sphere::occluded(const Ray& ray, double t_max) const {
@@ -37,8 +40,8 @@ std::optional<ShapeSample> Sphere::sample_area(Point2 u) const {
     // Uniform on the sphere: z uniform in [−1, 1] (Archimedes' hat-box theorem), φ uniform.
     const double z = 1 - 2 * u.x;
     const double r = safe_sqrt(1 - z * z);
-    const double phi = 2 * kPi * u.y;
-    const Vec3 n{r * std::cos(phi), r * std::sin(phi), z};
+    const SinCos phi = sincos_turns(u.y);
+    const Vec3 n{r * phi.cos, r * phi.sin, z};
     return ShapeSample{center_ + radius_ * n, n, 1 / area()};
 }
 
@@ -71,9 +74,9 @@ std::optional<SeenSample> Sphere::sample_seen_from(const Vec3& ref, Point2 u) co
     const double sin2_theta = omc * (2 - omc);
     const double cos_alpha = sin2_theta / sin_max + cos_theta * safe_sqrt(1 - sin2_theta / sin2_max);
     const double sin_alpha = safe_sqrt(1 - cos_alpha * cos_alpha);
-    const double phi = 2 * kPi * u.y;
+    const SinCos phi = sincos_turns(u.y);
     const Frame frame = Frame::from_normal(to_center / std::sqrt(d2));
-    const Vec3 normal = frame.to_world({-sin_alpha * std::cos(phi), -sin_alpha * std::sin(phi), -cos_alpha});
+    const Vec3 normal = frame.to_world({-sin_alpha * phi.cos, -sin_alpha * phi.sin, -cos_alpha});
     const Vec3 point = center_ + radius_ * normal;
     const Vec3 to_point = point - ref;
     const double distance = length(to_point);

@@ -59,6 +59,9 @@ class Sphere final : public Shape {
     Bounds3 bounds() const override;
     bool intersect(const Ray& ray, double t_max, Hit& hit) const override;
     bool occluded(const Ray& ray, double t_max) const override;
+    // What intersect records for the hit at t, a root that sphere_hit_t found: for the scene's BVH,
+    // which tests spheres inline and fills the nearest one's Hit without solving for t again.
+    void fill_hit(const Ray& ray, double t, Hit& hit) const;
     double area() const override { return 4 * kPi * radius_ * radius_; }
     std::optional<ShapeSample> sample_area(Point2 u) const override;
     // Seen from outside, uniformly over the cone of directions the sphere subtends (pbrt-v4 §6.2.4): no

@@ -17,8 +17,8 @@ std::optional<BsdfSample> FuzzyMetal::sample(const MaterialPoint& point, const V
         // A uniform point on the unit sphere (the book's random_unit_vector): z uniform in [−1, 1].
         const double z = 1 - 2 * u.x;
         const double r = safe_sqrt(1 - z * z);
-        const double phi = 2 * kPi * u.y;
-        scattered = normalize(scattered + fuzz_ * Vec3{r * std::cos(phi), r * std::sin(phi), z});
+        const SinCos phi = sincos_turns(u.y);
+        scattered = normalize(scattered + fuzz_ * Vec3{r * phi.cos, r * phi.sin, z});
     }
     if (!same_hemisphere(wo, scattered)) {
         return std::nullopt;  // perturbed below the surface (the book's front-face normal): absorbed

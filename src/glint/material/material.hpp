@@ -176,8 +176,8 @@ inline Vec3 flip_if_below(const Vec3& w, double side) {
 // its density is z / π.
 inline Vec3 sample_cosine_hemisphere(Point2 u) {
     const double r = std::sqrt(u.x);
-    const double phi = 2 * kPi * u.y;
-    return {r * std::cos(phi), r * std::sin(phi), safe_sqrt(1 - u.x)};
+    const SinCos phi = sincos_turns(u.y);
+    return {r * phi.cos, r * phi.sin, safe_sqrt(1 - u.x)};
 }
 
 }  // namespace glint

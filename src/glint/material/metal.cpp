@@ -59,10 +59,10 @@ std::optional<BsdfSample> Metal::sample(const MaterialPoint& point, const Vec3& 
     const Vec3 t1 = len2 > 0 ? Vec3{-vh.y, vh.x, 0} / std::sqrt(len2) : Vec3{1, 0, 0};
     const Vec3 t2 = cross(vh, t1);
     const double r = std::sqrt(u.x);
-    const double phi = 2 * kPi * u.y;
-    const double p1 = r * std::cos(phi);
+    const SinCos phi = sincos_turns(u.y);
+    const double p1 = r * phi.cos;
     const double s = 0.5 * (1 + vh.z);
-    const double p2 = (1 - s) * safe_sqrt(1 - p1 * p1) + s * r * std::sin(phi);
+    const double p2 = (1 - s) * safe_sqrt(1 - p1 * p1) + s * r * phi.sin;
     const Vec3 nh = p1 * t1 + p2 * t2 + safe_sqrt(1 - p1 * p1 - p2 * p2) * vh;
     const Vec3 m = normalize(Vec3{alpha_ * nh.x, alpha_ * nh.y, std::max(1e-12, nh.z)});
     const Vec3 wi = flip_if_below(2 * dot(o, m) * m - o, wo.z);

@@ -51,9 +51,9 @@ std::optional<BsdfSample> Phong::sample(const MaterialPoint& point, const Vec3& 
         // cos α = ξ^{1/(n+1)} has density (n + 1)/(2π) cosⁿα about the mirror direction.
         const double cos_alpha = std::pow(u.x / p, 1 / (exponent_ + 1));
         const double sin_alpha = safe_sqrt(1 - cos_alpha * cos_alpha);
-        const double phi = 2 * kPi * u.y;
+        const SinCos phi = sincos_turns(u.y);
         wi = Frame::from_normal(mirror_local(wo))
-                 .to_world({sin_alpha * std::cos(phi), sin_alpha * std::sin(phi), cos_alpha});
+                 .to_world({sin_alpha * phi.cos, sin_alpha * phi.sin, cos_alpha});
     } else {
         const Point2 v{(u.x - p) / (1 - p), u.y};
         wi = flip_if_below(sample_cosine_hemisphere(v), wo.z);

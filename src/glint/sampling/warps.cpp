@@ -7,8 +7,8 @@ namespace glint {
 namespace {
 // The unit vector at polar angle θ (given by its cosine and sine) and azimuth 2π·v about +z.
 Vec3 direction_from(double cos_theta, double sin_theta, double v) {
-    const double phi = 2 * kPi * v;
-    return {sin_theta * std::cos(phi), sin_theta * std::sin(phi), cos_theta};
+    const SinCos azimuth = sincos_turns(v);
+    return {sin_theta * azimuth.cos, sin_theta * azimuth.sin, cos_theta};
 }
 Vec3 direction_from(double cos_theta, double v) {
     return direction_from(cos_theta, safe_sqrt(1 - cos_theta * cos_theta), v);
@@ -23,15 +23,14 @@ Point2 square_to_disk_concentric(Point2 u) {
     }
     // The square's concentric squares (|a| or |b| constant) become circles of radius r; the position
     // along each square's edge becomes the angle, linearly, which is what keeps areas equal.
-    double r, phi;
+    // The angle within the octant, |ψ| ≤ π/4, needs no reduction before its series; the second case is
+    // φ = π/2 − ψ, whose cosine and sine are sin ψ and cos ψ.
     if (std::abs(a) > std::abs(b)) {
-        r = a;
-        phi = (kPi / 4) * (b / a);
-    } else {
-        r = b;
-        phi = kPi / 2 - (kPi / 4) * (a / b);
+        const SinCos psi = sincos_quarter_pi((kPi / 4) * (b / a));
+        return {a * psi.cos, a * psi.sin};
     }
-    return {r * std::cos(phi), r * std::sin(phi)};
+    const SinCos psi = sincos_quarter_pi((kPi / 4) * (a / b));
+    return {b * psi.sin, b * psi.cos};
 }
 
 double uniform_disk_pdf() {

@@ -24,7 +24,8 @@ int cell_parity(double x) {
 Rgb CheckerTexture::evaluate(const Hit& hit) const {
     int parity = 0;
     if (space_ == Space::Uv) {
-        parity = cell_parity(hit.uv.x * scale_) ^ cell_parity(hit.uv.y * scale_);
+        const Point2 uv = surface_uv(hit);
+        parity = cell_parity(uv.x * scale_) ^ cell_parity(uv.y * scale_);
     } else {
         parity = cell_parity(hit.point.x * scale_) ^ cell_parity(hit.point.y * scale_) ^
                  cell_parity(hit.point.z * scale_);

@@ -14,7 +14,7 @@ class ImageTexture final : public Texture {
   public:
     explicit ImageTexture(Image image);
 
-    Rgb evaluate(const Hit& hit) const override { return lookup(hit.uv); }
+    Rgb evaluate(const Hit& hit) const override { return lookup(surface_uv(hit)); }
     Rgb lookup(Point2 uv) const;
     double min_value() const override { return min_; }
     double max_value() const override { return max_; }

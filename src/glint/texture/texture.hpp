@@ -2,7 +2,7 @@
 //
 // Any colour parameter of a material accepts either a colour ([r, g, b] or one number) or a texture map
 // {type: checker | image | noise | constant, …}. A texture is evaluated at a Hit: solid textures use
-// hit.point (world space), surface textures hit.uv.
+// hit.point (world space), surface textures surface_uv(hit).
 #pragma once
 
 #include <functional>
