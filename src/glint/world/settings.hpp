@@ -3,6 +3,8 @@
 #include <cstdint>
 #include <string>
 
+#include "glint/sampling/pixel_filter.hpp"
+
 namespace glint {
 
 // Upper bounds of the render settings, checked by the scene builder for the file and the command line
@@ -29,6 +31,7 @@ struct RenderSettings {
     int height = 360;
     std::uint32_t samples_per_pixel = 16;  // requested; the sampler may round it (jittered: to a square)
     std::string sampler = "jittered";
+    PixelFilter filter;  // where in and around its pixel a sample lands (box: the pixel itself)
     std::string integrator = "raycast";
     std::string accelerator = "bvh";
     int max_depth = 5;  // the integrator's, unless it gives its own
