@@ -368,6 +368,7 @@ std::vector<PlacedMap> placed_maps() {
     return {
         {{}, ""},
         {{"render"}, "render"},
+        {{"render", "filter"}, "render"},
     };
 }
 

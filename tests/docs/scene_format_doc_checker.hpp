@@ -80,7 +80,7 @@ struct PlacedMap {
     std::string chapter;
 };
 
-// The top level and `render:`. Add a row when another fixed block gets keys of its own.
+// The top level, `render:` and `render.filter`. Add a row when another fixed block gets keys of its own.
 std::vector<PlacedMap> placed_maps();
 
 // Every name has a section in its concept's chapter, and every name heading there names a known name.

@@ -133,6 +133,17 @@ TEST(SceneFormatDocChecker, ARemovedRenderKeyIsReported) {
     EXPECT_TRUE(any_holds(problems, "key `seed` of `render:`")) << listed(problems);
 }
 
+TEST(SceneFormatDocChecker, ARemovedFilterKeyIsReported) {
+    // render.filter is a map of its own, whose keys belong to the render chapter too.
+    std::string text = read_doc_text();
+    text = edit_section(text, "## render", "`subpixels`", "the sub-pixel count");
+    text = edit_section(text, "## render", "subpixels: S}`", "…}`");
+    text = edit_section(text, "## render", "`{type: tent, radius: 0.5, subpixels: 2}`", "its map");
+    const auto problems = check_asked_keys(parse(text), scene_concepts(), placed_maps(), kDocsDir);
+    EXPECT_TRUE(any_holds(problems, "key `subpixels` of `render.filter:`")) << listed(problems);
+    EXPECT_EQ(problems.size(), 1u) << listed(problems);
+}
+
 TEST(SceneFormatDocChecker, AnIntegratorsKeyIsChecked) {
     // The builder reads render.integrator through a copy of its map: the key is still the section's.
     std::string text = read_doc_text();

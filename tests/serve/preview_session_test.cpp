@@ -65,6 +65,10 @@ TEST_F(PreviewEdits, ACameraEditKeepsTheWorldAndReadsNoFile) {
     // Render settings too.
     EXPECT_EQ(session_->apply({edit({"render", "samples"}, "9")}), 3u);
     EXPECT_EQ(session_->apply({edit({"render", "integrator"}, "path")}), 4u);
+    // The pixel filter is a render setting: the view is rebuilt with it, and it renders.
+    EXPECT_EQ(session_->apply({edit({"render", "filter"}, "tent")}), 5u);
+    EXPECT_EQ(session_->state().settings.filter.type, PixelFilterType::tent);
+    EXPECT_TRUE(frame_of(*session_, 5u));
     EXPECT_EQ(session_->world(), before);
     EXPECT_EQ(watch_->opened(), std::vector<std::string>{});
 }

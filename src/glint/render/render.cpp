@@ -14,7 +14,7 @@ Rgb render_sample(const World& world, const View& view, int x, int y, std::uint3
     // Hashed once here; every dimension of the path then costs the sampler one mix.
     const SampleHashes key(
         SampleKey{view.settings.seed, static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y), sample});
-    const Point2 offset = view.sampler->sample_2d(key, kFilmDimension);
+    const Point2 offset = view.settings.filter.offset(view.sampler->sample_2d(key, kFilmDimension));
     const Point2 lens = view.sampler->sample_2d(key, kLensDimension);
     const Ray ray = view.camera->generate_ray({x + offset.x, y + offset.y}, lens);
     if (!sees_scene(ray)) {

@@ -10,6 +10,7 @@
 #include "glint/params/build_context.hpp"
 #include "glint/params/name_table.hpp"
 #include "glint/params/params.hpp"
+#include "glint/sampling/pixel_filter.hpp"
 #include "glint/sampling/sampler.hpp"
 #include "glint/scene/scene.hpp"
 #include "glint/scene/scene_desc.hpp"
@@ -38,7 +39,7 @@ Node empty_map_at(const SourcePos& pos) {
     return empty;
 }
 
-// The `render:` block's own keys. The sampler and integrator are objects of their own, read by
+// The `render:` block's own keys. The sampler, filter and integrator are objects of their own, read by
 // build_view; here their nodes are only marked as read.
 RenderSettings read_render_settings(Params& p) {
     RenderSettings s;
@@ -101,8 +102,8 @@ View build_view(const SceneDesc& desc) {
     View view;
     view.settings = read_render_settings(render);
 
-    // The sampler and the integrator: objects with a type, or a plain word (the short form); left out,
-    // the default's word.
+    // The sampler, the filter and the integrator: objects with a type, or a plain word (the short form); left
+    // out, the default's word.
     const auto typed = [&](const std::string& key, const std::string& fallback) {
         const Node* node = render.node(key);
         Node word;
@@ -124,6 +125,12 @@ View build_view(const SceneDesc& desc) {
         const std::string name = sampler_table().lookup_type(p, "sampler").name;
         view.settings.sampler = name;
         view.sampler = make_sampler(name, view.settings.samples_per_pixel);
+        p.finish();
+    }
+    {
+        const Node node = typed("filter", pixel_filter_types().name_of(RenderSettings{}.filter.type));
+        Params p(node, "filter");
+        view.settings.filter = read_pixel_filter(p);
         p.finish();
     }
     {

@@ -28,7 +28,8 @@ void move_positions(Node& node, const std::shared_ptr<const SourceFile>& file, i
 
 // Keys whose plain word is the short form of {type: word}.
 bool is_typed_short_form(const std::vector<std::string>& path, size_t depth) {
-    return depth == 2 && path[0] == "render" && (path[1] == "integrator" || path[1] == "sampler");
+    return depth == 2 && path[0] == "render" &&
+           (path[1] == "integrator" || path[1] == "sampler" || path[1] == "filter");
 }
 
 }  // namespace

@@ -19,11 +19,11 @@
 namespace glint {
 
 // Applies one `key.path=value` to `desc`. Keys are separated by dots; a number picks an element of a
-// list (`objects.0.radius=2`). Missing maps along the path are made; `render.integrator` and
-// `render.sampler` given as a plain word become {type: word} when a key is set below them. The value
-// is YAML (`4`, `thin-lens`, `[0, 1, 5]`, `{type: path, max_depth: 8}`). Throws SceneError, positioned
-// in the argument, for a malformed assignment or a path through something that is not a map or list.
-// `source` names the argument in messages (a flag such as --width is a short form of a --set).
+// list (`objects.0.radius=2`). Missing maps along the path are made; `render.integrator`,
+// `render.sampler` and `render.filter` given as a plain word become {type: word} when a key is set below
+// them. The value is YAML (`4`, `thin-lens`, `[0, 1, 5]`, `{type: path, max_depth: 8}`). Throws SceneError,
+// positioned in the argument, for a malformed assignment or a path through something that is not a map or
+// list. `source` names the argument in messages (a flag such as --width is a short form of a --set).
 void apply_set(SceneDesc& desc, const std::string& assignment, const std::string& source = "--set");
 
 // The command line's render flags. Each one given is a short form of a --set (flag_edits), so that the

@@ -3,6 +3,8 @@
 #include <cstdint>
 #include <string>
 
+#include "glint/sampling/pixel_filter.hpp"
+
 namespace glint {
 
 // Upper bounds of the render settings, checked by the scene builder for the file and the command line
@@ -31,6 +33,7 @@ struct RenderSettings {
     // Owen-scrambled Sobol: on the reference scenes (smallpt, RTIOW's final scene, the Cornell box) it
     // has the lowest error per unit time of the patterns, and it takes any sample count as is.
     std::string sampler = "sobol";
+    PixelFilter filter;  // where in and around its pixel a sample lands (box: the pixel itself)
     std::string integrator = "raycast";
     std::string accelerator = "bvh";
     int max_depth = 5;  // the integrator's, unless it gives its own
