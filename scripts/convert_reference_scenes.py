@@ -29,8 +29,8 @@ def vec(v):
 # The reference materials as glint materials (docs/scene-format.md, "materials").
 MATERIALS = {
     "lambertian": lambda m: f"{{type: matte, albedo: {vec(m['albedo'])}}}",
-    # The book's own lobes: its metal is glint's fuzzy-metal (mirror direction + fuzz × a random unit
-    # vector, no Fresnel), its dielectric chooses reflection with Schlick's approximation.
+    # The book's own lobes: its metal is glint's fuzzy-metal (mirror direction + fuzz × a random point
+    # in the unit ball, no Fresnel), its dielectric chooses reflection with Schlick's approximation.
     "metal": lambda m: f"{{type: fuzzy-metal, albedo: {vec(m['albedo'])}, fuzz: {num(m['fuzz'])}}}",
     "dielectric": lambda m: f"{{type: dielectric, ior: {num(m['ir'])}, fresnel: schlick}}",
 }
@@ -49,7 +49,7 @@ def convert_rtiow(data, defocus=True):
         "# book's sky, white at the nadir to (0.5, 0.7, 1) at the zenith, lerped by 0.5 (dir.y + 1), as an",
         "# environment light (so it also lights the scene, as in the book). Materials: lambertian → matte,",
         "# metal (albedo, fuzz) → fuzzy-metal (the book's lobe: the mirror direction plus fuzz × a random",
-        "# unit vector, absorbed below the surface), dielectric → dielectric with `fresnel: schlick` (the",
+        "# point in the unit ball, absorbed below the surface), dielectric → dielectric with `fresnel: schlick` (the",
         "# book's reflect/refract choice). The book's integrator is a path tracer without light sampling;",
         "# so is glint's here: it spends no shadow ray on a gradient sky, which BSDF sampling follows as well",
         "# (fuzzy-metal and glass are sampled like the book, as delta lobes). It ends dim paths by Russian",

@@ -1,6 +1,7 @@
 // Ray Tracing in One Weekend's lobes: fuzzy-metal (the mirror direction perturbed by fuzz × a random
-// unit vector) and the dielectric's Schlick reflect/refract choice, against the book's definitions, and
-// furnaces that show the fuzzy lobe neither creates light nor differs from a mirror at fuzz 0.
+// point in the unit ball or on the unit sphere) and the dielectric's Schlick reflect/refract choice, against
+// the book's definitions, and furnaces that show the fuzzy lobe neither creates light nor differs from a
+// mirror at fuzz 0.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -21,8 +22,9 @@ using testing::mirror_direction;
 using testing::test_hit;
 using testing::test_point;
 
-FuzzyMetal fuzzy(double albedo, double fuzz) {
-    return FuzzyMetal(std::make_shared<ConstantTexture>(Rgb(albedo)), fuzz);
+FuzzyMetal fuzzy(double albedo, double fuzz,
+                 FuzzyMetal::Perturbation perturbation = FuzzyMetal::Perturbation::Ball) {
+    return FuzzyMetal(std::make_shared<ConstantTexture>(Rgb(albedo)), fuzz, perturbation);
 }
 
 double angle_between(const Vec3& a, const Vec3& b) {
@@ -75,7 +77,7 @@ TEST(FuzzyMetal, SamplesLieInTheConeOfHalfAngleArcsinFuzzAboutTheMirrorDirection
 TEST(FuzzyMetal, DirectionsPerturbedBelowTheSurfaceAreAbsorbed) {
     // Near grazing incidence much of the cone lies below the surface: those samples end the path.
     const Hit hit = test_hit();
-    const FuzzyMetal metal = fuzzy(1, 0.8);
+    const FuzzyMetal metal = fuzzy(1, 0.8, FuzzyMetal::Perturbation::Sphere);
     const Vec3 wo = direction_at(hit, 0.1, 1.0);
     const Frame frame = Frame::from_normal(hit.shading_normal);
     int absorbed = 0;
@@ -93,6 +95,36 @@ TEST(FuzzyMetal, DirectionsPerturbedBelowTheSurfaceAreAbsorbed) {
     }
     EXPECT_GT(absorbed, n / 10);
     EXPECT_LT(absorbed, n);
+}
+
+TEST(FuzzyMetalFurnace, AWhiteSphereOfFuzzOneKeepsTheShareOfPerturbationsAboveItsSurface) {
+    // Seen head-on at a point whose normal makes cos θ = c with the view, the mirror direction R has
+    // R·N = c, and R + s is above the surface when s·N > −c. For s uniform in the unit ball s·N has
+    // density 3(1 − t²)/4, so P = (2 + 3c − c³)/4; on the unit sphere it is uniform: P = (1 + c)/2.
+    // Under a white sky a white sphere shows exactly P (the rest is absorbed).
+    for (const bool ball : {true, false}) {
+        const std::string yaml =
+            std::string("render: {width: 64, height: 1, samples: 4096, max_depth: 50, integrator: path}\n") +
+            "camera: {type: orthographic, eye: [0, 0, 5], look_at: [0, 0, 0], up: [0, 1, 0], height: "
+            "0.03125}\n"
+            "objects: [{type: sphere, radius: 1, material: {type: fuzzy-metal, albedo: 1, fuzz: 1, "
+            "perturbation: " +
+            (ball ? "ball" : "sphere") + "}}]\nlights: [{type: environment, radiance: 1}]\n";
+        const Film film = test::render_film(test::scene_from_yaml(yaml));
+        // The film is 2 wide (64 pixels of 1/32): pixel x covers [x/32 − 1, (x + 1)/32 − 1).
+        for (const int x : {32, 40, 48, 54, 58}) {
+            double expected = 0;  // the mean of P over the pixel's width, by the midpoint rule
+            for (int k = 0; k < 64; ++k) {
+                const double px = (x + (k + 0.5) / 64) / 32 - 1;
+                const double c = std::sqrt(1 - px * px);
+                expected += (ball ? (2 + 3 * c - c * c * c) / 4 : (1 + c) / 2) / 64;
+            }
+            // Each sample is 1 or 0 (no roulette: the throughput stays 1): four binomial standard errors.
+            const double tolerance = 4 * std::sqrt(expected * (1 - expected) / 4096) + 1e-9;
+            EXPECT_NEAR(film.pixel(x, 0).g, expected, tolerance)
+                << (ball ? "ball" : "sphere") << ", pixel " << x;
+        }
+    }
 }
 
 TEST(FuzzyMetal, EvaluateAndPdfAreZeroLikeADeltaLobe) {

@@ -1,10 +1,14 @@
 // Fuzzy metal {type: fuzzy-metal, albedo, fuzz} (Ray Tracing in One Weekend's `metal`):
 //   albedo  colour or texture in [0, 1], default 0.9: the fraction of light reflected;
-//   fuzz    in [0, 1], default 0: the radius of the sphere the mirror direction is perturbed by (0 is a
-//           perfect mirror of reflectance albedo).
+//   fuzz    in [0, 1], default 0: the radius of the ball the mirror direction is perturbed by (0 is a
+//           perfect mirror of reflectance albedo);
+//   perturbation  ball (default) | sphere: a point in the ball or on its surface.
 #include "glint/material/fuzzy_metal.hpp"
 
+#include "glint/params/name_table.hpp"
 #include "glint/params/params.hpp"
+
+#include <cmath>
 
 namespace glint {
 
@@ -14,11 +18,20 @@ std::optional<BsdfSample> FuzzyMetal::sample(const MaterialPoint& point, const V
     }
     Vec3 scattered = mirror_local(wo);
     if (fuzz_ > 0) {
-        // A uniform point on the unit sphere (the book's random_unit_vector): z uniform in [−1, 1].
+        // A uniform direction (z uniform in [−1, 1]), from the high bits of u.x and u.y.
         const double z = 1 - 2 * u.x;
         const double r = safe_sqrt(1 - z * z);
         const SinCos phi = sincos_turns(u.y);
-        scattered = normalize(scattered + fuzz_ * Vec3{r * phi.cos, r * phi.sin, z});
+        double length = 1;  // on the sphere
+        if (perturbation_ == Perturbation::Ball) {
+            // Uniform in the ball: the distance from the centre has density 3ρ², so ρ = ξ^(1/3). The
+            // interface hands a material two numbers, so ξ comes from the bits of u.x below its top 16,
+            // which every sampler randomises independently of the top ones (jitter inside a stratum,
+            // Owen scrambling, or plain random bits) for up to 65 536 samples per pixel.
+            const double scaled = u.x * 65536.0;
+            length = std::cbrt(scaled - std::floor(scaled));
+        }
+        scattered = normalize(scattered + (fuzz_ * length) * Vec3{r * phi.cos, r * phi.sin, z});
     }
     if (!same_hemisphere(wo, scattered)) {
         return std::nullopt;  // perturbed below the surface (the book's front-face normal): absorbed
@@ -32,7 +45,11 @@ std::unique_ptr<Material> FuzzyMetal::create(Params& params, const BuildContext&
     if (!(fuzz >= 0 && fuzz <= 1)) {
         params.fail("fuzz", "fuzzy-metal fuzz must lie in [0, 1] (the book clamps it to 1)");
     }
-    return std::make_unique<FuzzyMetal>(std::move(albedo), fuzz);
+    static const EnumTable<FuzzyMetal::Perturbation> perturbations = {
+        {"ball", FuzzyMetal::Perturbation::Ball}, {"sphere", FuzzyMetal::Perturbation::Sphere}};
+    const FuzzyMetal::Perturbation perturbation =
+        params.enumeration("perturbation", perturbations, FuzzyMetal::Perturbation::Ball);
+    return std::make_unique<FuzzyMetal>(std::move(albedo), fuzz, perturbation);
 }
 
 }  // namespace glint

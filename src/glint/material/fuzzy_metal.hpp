@@ -7,9 +7,11 @@
 
 namespace glint {
 
-// Ray Tracing in One Weekend's metal (book 1, v4 `metal::scatter`): the mirror direction R of the
-// incoming ray, perturbed by `fuzz` times a uniformly random point on the unit sphere,
-//   scattered = R + fuzz · s,   |s| = 1,
+// Ray Tracing in One Weekend's metal (book 1, `metal::scatter`): the mirror direction R of the
+// incoming ray, perturbed by `fuzz` times a uniformly random point s in the unit ball (the book's code
+// at the commit bench/peers.py measures, random_in_unit_sphere) or on the unit sphere (`perturbation:
+// sphere`, random_unit_vector, as later editions of the book have it),
+//   scattered = R + fuzz · s,   |s| ≤ 1 (ball) or |s| = 1 (sphere),
 // absorbed (sample() returns nullopt) when dot(scattered, N) ≤ 0 with N the normal facing the ray;
 // otherwise the path is attenuated by `albedo` (no Fresnel term). With |R| = 1 and |fuzz · s| ≤ fuzz
 // the scattered direction lies within the cone of half-angle asin(fuzz) about R.
@@ -24,8 +26,10 @@ namespace glint {
 // MaterialPoint::specular.
 class FuzzyMetal final : public Material {
   public:
-    FuzzyMetal(std::shared_ptr<const Texture> albedo, double fuzz)
-        : albedo_(std::move(albedo)), fuzz_(fuzz) {}
+    enum class Perturbation { Ball, Sphere };
+    FuzzyMetal(std::shared_ptr<const Texture> albedo, double fuzz,
+               Perturbation perturbation = Perturbation::Ball)
+        : albedo_(std::move(albedo)), fuzz_(fuzz), perturbation_(perturbation) {}
     bool random_delta_direction() const override { return fuzz_ > 0; }
 
     static std::unique_ptr<Material> create(Params& params, const BuildContext& context);
@@ -39,6 +43,7 @@ class FuzzyMetal final : public Material {
   private:
     std::shared_ptr<const Texture> albedo_;
     double fuzz_;
+    Perturbation perturbation_;
 };
 
 }  // namespace glint
