@@ -101,6 +101,103 @@ TEST(Bvh, SmallScenesTestedFlatGiveTheTreesHitsBitForBit) {
     EXPECT_EQ(BvhAccelerator(pointers(many)).flat_count(), 0u);
 }
 
+// Spheres are tested four at a time with AVX2 when the CPU has it; the answers must be the very bits the
+// one-at-a-time loop gives: the same t (so the same Hit), the first of exactly equal t's in list order,
+// and other shapes (their own intersect) met in their place in the list. Lists of every length up to
+// 14 (so every tail of a group of four), spheres overlapping, nested, duplicated, and met tangentially,
+// rays from inside spheres and from on their surface, flat and in a tree (leaves of up to 4).
+TEST(Bvh, SpheresFourAtATimeGiveTheOneAtATimeBits) {
+    if (!WideBvh::cpu_has_avx2()) {
+        GTEST_SKIP() << "no AVX2 on this CPU: only the one-at-a-time path exists";
+    }
+    std::mt19937_64 rng(2026);
+    std::uniform_real_distribution<double> unit(0, 1);
+    int hits = 0;
+    int sphere_hits = 0;
+    int other_hits = 0;
+    int tangent_rays = 0;
+    for (int scene = 0; scene < 120; ++scene) {
+        const int count = 1 + scene % 14;
+        std::vector<std::unique_ptr<Shape>> shapes;
+        std::vector<std::pair<Vec3, double>> spheres;  // the spheres, for rays aimed at them
+        for (int i = 0; i < count; ++i) {
+            const double kind = unit(rng);
+            if (scene % 3 != 0 && kind < 0.2) {  // a third of the scenes: spheres only
+                const Vec3 corner = random_in_box(rng, {-2, -2, -2}, {2, 2, 2});
+                shapes.push_back(std::make_unique<Rectangle>(corner, Vec3{1.5, 0, 0.3}, Vec3{0, 1.2, 0.4}));
+            } else if (scene % 3 != 0 && kind < 0.25) {
+                shapes.push_back(std::make_unique<Plane>(Vec3{0, -2.5, 0}, Vec3{0.1, 1, 0}));
+            } else if (!spheres.empty() && kind < 0.4) {
+                // The same sphere again (exact ties in t), or one nested in or touching a previous one.
+                const auto [center, radius] = spheres[rng() % spheres.size()];
+                const double r = kind < 0.3 ? radius : radius * (0.2 + 1.5 * unit(rng));
+                spheres.emplace_back(kind < 0.35 ? center : center + Vec3{radius + r, 0, 0}, r);
+                shapes.push_back(std::make_unique<Sphere>(spheres.back().first, spheres.back().second));
+            } else {
+                spheres.emplace_back(random_in_box(rng, {-2, -2, -2}, {2, 2, 2}), 0.1 + 1.2 * unit(rng));
+                shapes.push_back(std::make_unique<Sphere>(spheres.back().first, spheres.back().second));
+            }
+        }
+        const auto ptrs = pointers(shapes);
+        for (const std::size_t flat_max : {ptrs.size(), std::size_t{0}}) {
+            const BvhAccelerator bvh(ptrs, flat_max);
+            for (int r = 0; r < 400; ++r) {
+                Vec3 origin = random_in_box(rng, {-4, -4, -4}, {4, 4, 4});
+                Vec3 direction = random_direction(rng);
+                if (!spheres.empty() && r % 4 != 0) {
+                    const auto [center, radius] = spheres[rng() % spheres.size()];
+                    if (r % 4 == 1) {
+                        // Tangent: past the centre at exactly one radius from it, perpendicular to the ray.
+                        const Vec3 side = normalize(cross(direction, random_direction(rng)));
+                        origin = center + radius * side - 3.0 * direction;
+                        ++tangent_rays;
+                    } else if (r % 4 == 2) {
+                        // From inside, or from a point on the surface (t near 0).
+                        origin = unit(rng) < 0.5 ? center + (0.9 * radius * unit(rng)) * random_direction(rng)
+                                                 : center + radius * random_direction(rng);
+                    } else {
+                        // Towards the sphere, some just past its rim.
+                        const Vec3 target = center + (1.1 * radius * unit(rng)) * random_direction(rng);
+                        direction = normalize(target - origin);
+                    }
+                }
+                const Ray ray{origin, direction};
+                const double t_max = r % 5 == 0 ? 1 + 4 * unit(rng) : kInf;
+                Hit scalar_hit, vector_hit;
+                WideBvh::force_scalar_traversal(true);
+                const bool scalar_found = bvh.intersect(ray, t_max, scalar_hit);
+                const bool scalar_occluded = bvh.occluded(ray, t_max);
+                WideBvh::force_scalar_traversal(false);
+                const bool vector_found = bvh.intersect(ray, t_max, vector_hit);
+                ASSERT_EQ(vector_found, scalar_found) << scene << " " << r;
+                EXPECT_EQ(bvh.occluded(ray, t_max), scalar_occluded) << scene << " " << r;
+                EXPECT_EQ(scalar_occluded, scalar_found);
+                if (scalar_found) {
+                    ++hits;
+                    ++(dynamic_cast<const Sphere*>(ptrs[scalar_hit.primitive]) ? sphere_hits : other_hits);
+                    expect_identical_hits(vector_hit, scalar_hit, false);
+                }
+            }
+        }
+    }
+    WideBvh::force_scalar_traversal(false);
+    // The comparison means something only if rays hit both kinds of shape, and tangents were tried.
+    EXPECT_GT(sphere_hits, 40000);
+    EXPECT_GT(other_hits, 2000);
+    EXPECT_GT(tangent_rays, 15000);
+    EXPECT_GT(hits, sphere_hits);
+
+    // Exact ties: four copies of one sphere and a fifth; the first copy in list order is the one hit.
+    std::vector<std::unique_ptr<Shape>> copies;
+    for (int i = 0; i < 5; ++i) {
+        copies.push_back(std::make_unique<Sphere>(Vec3{0, 0, 5}, 1.0));
+    }
+    const BvhAccelerator flat(pointers(copies));
+    Hit hit;
+    ASSERT_TRUE(flat.intersect(Ray{{0.1, 0.2, 0}, {0, 0, 1}}, kInf, hit));
+    EXPECT_EQ(hit.primitive, 0u);
+}
+
 TEST(Bvh, PlanesAreKeptOutsideTheTreeAndStillHit) {
     auto shapes = test::random_spheres(300, 3);
     shapes.push_back(std::make_unique<Plane>(Vec3{0, -11, 0}, Vec3{0, 1, 0}));
