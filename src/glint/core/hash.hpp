@@ -113,18 +113,4 @@ class SampleHashes {
     std::uint32_t sample_index_;
 };
 
-// A stream of uniform numbers for one sample: number k is SampleKey::uniform(first_dimension + k).
-// It holds a counter, but the counter lives on the stack of one sample, so purity is kept.
-class SampleRng {
-  public:
-    constexpr SampleRng(const SampleKey& key, std::uint32_t first_dimension)
-        : key_(key), dimension_(first_dimension) {}
-    double uniform() { return key_.uniform(dimension_++); }
-    std::uint32_t dimension() const { return dimension_; }
-
-  private:
-    SampleKey key_;
-    std::uint32_t dimension_;
-};
-
 }  // namespace glint
