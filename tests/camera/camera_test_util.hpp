@@ -25,6 +25,12 @@ inline std::string camera_error(const std::string& camera) {
     return "no error";
 }
 
+// An oblique view the camera tests share: its keys (to put in a camera's map), its eye and its unit view
+// direction, so that a test can check depths along the view without restating the numbers.
+inline const std::string kObliqueView = "eye: [1, 2, 3], look_at: [-2, 0.5, -1], fov: 50";
+inline const Vec3 kObliqueEye{1, 2, 3};
+inline const Vec3 kObliqueForward = normalize(Vec3(-2, 0.5, -1) - kObliqueEye);
+
 // The distance from `point` to the line of `ray` (both ways), for "does this ray pass through p".
 inline double distance_to_line(const Ray& ray, const Vec3& point) {
     const Vec3 d = normalize(ray.direction);

@@ -54,6 +54,9 @@ TEST(CameraBasis, DegenerateUpLookingStraightDownOrUpGivesAValidBasis) {
 }
 
 using test::camera_scene;
+using test::kObliqueEye;
+using test::kObliqueForward;
+using test::kObliqueView;
 
 TEST(Pinhole, TheImageCentreLooksAtLookAt) {
     const Scene scene = camera_scene("{eye: [1, 2, 3], look_at: [-2, 0.5, 0], fov: 50}");
@@ -90,11 +93,10 @@ TEST(Pinhole, KnownWorldPointProjectsToTheExpectedPixel) {
 TEST(Pinhole, NearPlaneStartsRaysWhereTheyCrossIt) {
     // The near-0 ray through each film point, started on the plane across the view at depth 2: its
     // origin is where that ray reaches depth 2 (origin·forward = 2, on the same line), direction kept.
-    const std::string view = "eye: [1, 2, 3], look_at: [-2, 0.5, -1], fov: 50";
-    const Scene plain = camera_scene("{" + view + "}");
-    const Scene clipped = camera_scene("{" + view + ", near: 2}");
-    const Vec3 eye{1, 2, 3};
-    const Vec3 forward = normalize(Vec3(-2, 0.5, -1) - eye);
+    const Scene plain = camera_scene("{" + kObliqueView + "}");
+    const Scene clipped = camera_scene("{" + kObliqueView + ", near: 2}");
+    const Vec3& eye = kObliqueEye;
+    const Vec3& forward = kObliqueForward;
     for (const Point2 film : {Point2{100, 50}, Point2{0, 0}, Point2{199.9, 3.25}, Point2{17.5, 99.9}}) {
         const Ray from_eye = plain.view.camera->generate_ray(film, {});
         const Ray from_near = clipped.view.camera->generate_ray(film, {});
@@ -103,7 +105,7 @@ TEST(Pinhole, NearPlaneStartsRaysWhereTheyCrossIt) {
         EXPECT_LT(length(from_near.direction - from_eye.direction), 1e-15);
     }
     // Unset, and 0, are today's camera bit for bit.
-    const Scene zero = camera_scene("{" + view + ", near: 0}");
+    const Scene zero = camera_scene("{" + kObliqueView + ", near: 0}");
     const Ray a = zero.view.camera->generate_ray({33.3, 44.4}, {});
     const Ray b = plain.view.camera->generate_ray({33.3, 44.4}, {});
     EXPECT_EQ(a.origin, b.origin);
@@ -111,10 +113,9 @@ TEST(Pinhole, NearPlaneStartsRaysWhereTheyCrossIt) {
 }
 
 TEST(Pinhole, NearSphereStartsRaysAtTheNearDistanceAlongThemselves) {
-    const std::string view = "eye: [1, 2, 3], look_at: [-2, 0.5, -1], fov: 50";
-    const Scene plain = camera_scene("{" + view + "}");
-    const Scene clipped = camera_scene("{" + view + ", near: 2, near_shape: sphere}");
-    const Vec3 eye{1, 2, 3};
+    const Scene plain = camera_scene("{" + kObliqueView + "}");
+    const Scene clipped = camera_scene("{" + kObliqueView + ", near: 2, near_shape: sphere}");
+    const Vec3& eye = kObliqueEye;
     for (const Point2 film : {Point2{100, 50}, Point2{0, 0}, Point2{199.9, 3.25}}) {
         const Ray from_eye = plain.view.camera->generate_ray(film, {});
         const Ray from_near = clipped.view.camera->generate_ray(film, {});

@@ -13,6 +13,9 @@ namespace {
 
 using test::at_depth;
 using test::camera_scene;
+using test::kObliqueEye;
+using test::kObliqueForward;
+using test::kObliqueView;
 
 // A regular n × n grid of lens samples covering the unit square, edges included (the edges map to the
 // rim of the lens).
@@ -29,11 +32,11 @@ std::vector<Point2> lens_grid(int n) {
 TEST(ThinLens, PointsOnTheFocusPlaneAreSharp) {
     // Every lens sample's ray for a film point passes through the point of the focus plane that the
     // pinhole ray of that film point hits.
-    const std::string view = "eye: [1, 2, 3], look_at: [-2, 0.5, -1], fov: 50";
-    const Scene lens = camera_scene("{type: thin-lens, " + view + ", lens_radius: 0.3, focus_distance: 4}");
-    const Scene pinhole = camera_scene("{type: pinhole, " + view + "}");
-    const Vec3 eye{1, 2, 3};
-    const Vec3 forward = normalize(Vec3(-2, 0.5, -1) - eye);
+    const Scene lens =
+        camera_scene("{type: thin-lens, " + kObliqueView + ", lens_radius: 0.3, focus_distance: 4}");
+    const Scene pinhole = camera_scene("{type: pinhole, " + kObliqueView + "}");
+    const Vec3& eye = kObliqueEye;
+    const Vec3& forward = kObliqueForward;
     for (const Point2 film : {Point2{100, 50}, Point2{3.5, 7.25}, Point2{180, 90}, Point2{150.5, 20}}) {
         const Vec3 focus_point = at_depth(pinhole.view.camera->generate_ray(film, {}), eye, forward, 4);
         double widest_origin = 0;
@@ -53,13 +56,11 @@ TEST(ThinLens, PointsOnTheFocusPlaneAreSharp) {
 TEST(ThinLens, NearPlaneStartsRaysOnItAndKeepsTheFocus) {
     // With near 1.5 each ray starts on the plane across the view at depth 1.5 from the lens, on the
     // line of the near-0 ray from the same lens point, and still passes through the focus point.
-    const std::string view =
-        "type: thin-lens, eye: [1, 2, 3], look_at: [-2, 0.5, -1], fov: 50, "
-        "lens_radius: 0.3, focus_distance: 4";
+    const std::string view = "type: thin-lens, " + kObliqueView + ", lens_radius: 0.3, focus_distance: 4";
     const Scene plain = camera_scene("{" + view + "}");
     const Scene clipped = camera_scene("{" + view + ", near: 1.5}");
-    const Vec3 eye{1, 2, 3};
-    const Vec3 forward = normalize(Vec3(-2, 0.5, -1) - eye);
+    const Vec3& eye = kObliqueEye;
+    const Vec3& forward = kObliqueForward;
     for (const Point2 film : {Point2{100, 50}, Point2{3.5, 7.25}, Point2{180, 90}}) {
         for (const Point2 u : lens_grid(5)) {
             const Ray from_lens = plain.view.camera->generate_ray(film, u);
