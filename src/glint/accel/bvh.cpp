@@ -21,7 +21,7 @@ void BvhAccelerator::ShapeList::add(const Shape* shape, std::uint32_t index) {
 namespace {
 
 // Four at a time pays for the flat list only, and only from three entries. Measured (user time, medians
-// of 5): smallpt's nine spheres render 13 % faster; in tree leaves (at most 4 shapes, often 1 or 2)
+// of 5): smallpt's nine spheres render 11–13 % faster; in tree leaves (at most 4 shapes, often 1 or 2)
 // it gained nothing (RTIOW's final scene: +6 % time from one entry, +1 % from two, +0.4 % from three;
 // the accelerator benchmark's 100 k spheres within ±3 %), so leaves stay one at a time.
 constexpr std::uint32_t kFewestSpheresForFour = 3;

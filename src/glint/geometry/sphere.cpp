@@ -3,6 +3,7 @@
 
 #include "glint/core/frame.hpp"
 #include "glint/params/params.hpp"
+#include "glint/sampling/warps.hpp"
 
 namespace glint {
 
@@ -37,11 +38,7 @@ bool Sphere::occluded(const Ray& ray, double t_max) const {
 }
 
 std::optional<ShapeSample> Sphere::sample_area(Point2 u) const {
-    // Uniform on the sphere: z uniform in [−1, 1] (Archimedes' hat-box theorem), φ uniform.
-    const double z = 1 - 2 * u.x;
-    const double r = safe_sqrt(1 - z * z);
-    const SinCos phi = sincos_turns(u.y);
-    const Vec3 n{r * phi.cos, r * phi.sin, z};
+    const Vec3 n = square_to_uniform_sphere(u);
     return ShapeSample{center_ + radius_ * n, n, 1 / area()};
 }
 

@@ -7,6 +7,7 @@
 
 #include "glint/params/name_table.hpp"
 #include "glint/params/params.hpp"
+#include "glint/sampling/warps.hpp"
 
 #include <cmath>
 
@@ -18,10 +19,8 @@ std::optional<BsdfSample> FuzzyMetal::sample(const MaterialPoint& point, const V
     }
     Vec3 scattered = mirror_local(wo);
     if (fuzz_ > 0) {
-        // A uniform direction (z uniform in [−1, 1]), from the high bits of u.x and u.y.
-        const double z = 1 - 2 * u.x;
-        const double r = safe_sqrt(1 - z * z);
-        const SinCos phi = sincos_turns(u.y);
+        // A uniform direction, from the high bits of u.x and u.y.
+        const Vec3 direction = square_to_uniform_sphere(u);
         double length = 1;  // on the sphere
         if (perturbation_ == Perturbation::Ball) {
             // Uniform in the ball: the distance from the centre has density 3ρ², so ρ = ξ^(1/3). The
@@ -31,7 +30,7 @@ std::optional<BsdfSample> FuzzyMetal::sample(const MaterialPoint& point, const V
             const double scaled = u.x * 65536.0;
             length = std::cbrt(scaled - std::floor(scaled));
         }
-        scattered = normalize(scattered + (fuzz_ * length) * Vec3{r * phi.cos, r * phi.sin, z});
+        scattered = normalize(scattered + (fuzz_ * length) * direction);
     }
     if (!same_hemisphere(wo, scattered)) {
         return std::nullopt;  // perturbed below the surface (the book's front-face normal): absorbed

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "glint/core/math.hpp"
+#include "glint/sampling/low_discrepancy.hpp"
 
 namespace glint {
 
@@ -43,7 +44,7 @@ double Distribution1D::sample(double u, double& pdf, std::size_t& cell) const {
     const double mean = integral_ > 0 ? integral_ : 1.0;
     pdf = weights_[cell] / mean;
     const double x = (static_cast<double>(cell) + std::clamp(offset, 0.0, 1.0)) / static_cast<double>(n);
-    return std::min(x, 1.0 - 0x1p-53);
+    return std::min(x, kOneMinusEpsilon);
 }
 
 double Distribution1D::pdf(double x) const {

@@ -3,19 +3,19 @@
 #include <algorithm>
 #include <cmath>
 
+#include "glint/sampling/low_discrepancy.hpp"
+
 namespace glint {
 
 namespace {
-
-// The largest double below 1: u·s − ⌊u·s⌋ can round up to 1 when s is not a power of two.
-constexpr double kBelowOne = 1.0 - 0x1.0p-53;
 
 // One axis of a tent filter with `subpixels` sub-pixels: the leading part of u picks the sub-pixel,
 // the rest, rescaled to [0,1), is warped by the tent about that sub-pixel's centre.
 double tent_axis(double u, double radius, int subpixels) {
     const double scaled = u * subpixels;
     const double cell = std::min(std::floor(scaled), subpixels - 1.0);
-    const double v = std::min(scaled - cell, kBelowOne);
+    // u·s − ⌊u·s⌋ can round up to 1 when s is not a power of two.
+    const double v = std::min(scaled - cell, kOneMinusEpsilon);
     return (cell + 0.5) / subpixels + radius * tent_inverse_cdf(v);
 }
 
