@@ -56,7 +56,8 @@ TEST(ProgressiveRender, CoarsePreviewRepeatsOneSamplePerBlock) {
     ASSERT_EQ(preview.height, 23);
     // The block's value is the radiance of sample 0 at the block's centre pixel.
     RayCounters rays;
-    const Rgb centre = render_sample(*scene.world, scene.view, 12, 12, 0, rays);  // block (8..16)²
+    const Rgb centre =
+        render_sample(*scene.world, scene.view, progressive.integrator(), 12, 12, 0, rays);  // block (8..16)²
     for (int y = 8; y < 16; ++y) {
         for (int x = 8; x < 16; ++x) {
             EXPECT_EQ(preview.pixel(x, y)[0], static_cast<float>(centre.r));
@@ -64,7 +65,7 @@ TEST(ProgressiveRender, CoarsePreviewRepeatsOneSamplePerBlock) {
         }
     }
     // The last, partial block row (y 16..22) takes its own centre.
-    const Rgb corner = render_sample(*scene.world, scene.view, 36, 19, 0, rays);
+    const Rgb corner = render_sample(*scene.world, scene.view, progressive.integrator(), 36, 19, 0, rays);
     EXPECT_EQ(preview.pixel(39, 22)[1], static_cast<float>(corner.g));
     EXPECT_EQ(progressive.samples_done(), 0u);  // the film is untouched
     EXPECT_EQ(progressive.film().sample_count(0, 0), 0u);

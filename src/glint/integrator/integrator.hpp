@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "glint/camera/camera.hpp"
 #include "glint/core/color.hpp"
 #include "glint/core/ray.hpp"
 #include "glint/params/name_table.hpp"
@@ -38,6 +39,17 @@ class Integrator {
     // Radiance arriving at the camera along `ray`. `samples` supplies this path's random numbers.
     virtual Rgb radiance(const World& world, const Ray& ray, SampleStream& samples,
                          RayCounters& rays) const = 0;
+
+    // This integrator, readied for `world` seen through `camera` on a film of `film`'s size: what it
+    // learns of the view before the first sample (the path tracer: where each light is seen, see
+    // light_visibility.hpp). The render loop calls it once per render and traces every sample with the
+    // result; nullptr when there is nothing to learn (then this integrator is used as it is). What is
+    // learnt may change only the variance, never the expected radiance, and must be a pure function of
+    // (world, camera, film size), so that images stay bit-identical for any threads or tiles.
+    virtual std::unique_ptr<Integrator> prepared(const World& /*world*/, const Camera& /*camera*/,
+                                                 FilmSize /*film*/) const {
+        return nullptr;
+    }
 };
 
 // An integrator reads its own parameters (`render: {integrator: {type: path, max_depth: 8}}`); the

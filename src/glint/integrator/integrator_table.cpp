@@ -30,7 +30,8 @@ const NameTable<IntegratorEntry>& integrator_table() {
          }},
         {"path", "path tracing with next-event estimation and multiple importance sampling",
          [](Params& p, const RenderSettings& s) {
-             return std::make_unique<PathIntegrator>(max_depth(p, s));
+             const int depth = max_depth(p, s);
+             return std::make_unique<PathIntegrator>(depth, p.boolean("learn_light_visibility", true));
          }},
     };
     return table;

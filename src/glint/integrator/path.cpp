@@ -17,6 +17,27 @@ constexpr int kRouletteStart = 3;
 constexpr double kRouletteThroughput = 0.25;
 }  // namespace
 
+std::unique_ptr<Integrator> PathIntegrator::prepared(const World& world, const Camera& camera,
+                                                     FilmSize film) const {
+    if (!learn_light_visibility_) {
+        return nullptr;
+    }
+    auto visibility =
+        std::make_shared<LightVisibility>(LightVisibility::learn(world, camera, film, max_depth_));
+    if (!visibility->any()) {
+        return nullptr;
+    }
+    auto copy = std::make_unique<PathIntegrator>(*this);
+    copy->visibility_ = std::move(visibility);
+    return copy;
+}
+
+double PathIntegrator::light_pdf_of(const World& world, std::size_t index, const Hit& at, const Vec3& wi,
+                                    const Hit* on_light) const {
+    const Light& light = *world.lights[index];
+    return visibility_ ? visibility_->pdf(index, light, at, wi, on_light) : light.pdf(at, wi, on_light);
+}
+
 Rgb PathIntegrator::radiance(const World& world, const Ray& camera_ray, SampleStream& samples,
                              RayCounters& rays) const {
     ++rays.camera;
@@ -46,11 +67,12 @@ Rgb PathIntegrator::radiance(const World& world, const Ray& camera_ray, SampleSt
 
         const Rgb emitted = material.emitted(hit, wo);
         if (!emitted.is_black()) {
-            const Light* light = world.light_of(hit);
-            if (specular || !light) {
+            const std::int32_t light_index = world.light_index_of(hit);
+            if (specular || light_index < 0) {
                 radiance += throughput * emitted;
             } else {
-                const double light_pdf = light->pdf(previous, -wo, &hit);
+                const auto index = static_cast<std::size_t>(light_index);
+                const double light_pdf = light_pdf_of(world, index, previous, -wo, &hit);
                 radiance += throughput * emitted * power_heuristic(bsdf_pdf, light_pdf);
             }
         }
@@ -63,12 +85,14 @@ Rgb PathIntegrator::radiance(const World& world, const Ray& camera_ray, SampleSt
         // Next-event estimation: one sample of each light worth sampling (see
         // Light::worth_sampling_in_paths).
         const Hit at = facing(hit, wo);
-        for (const auto& light : world.lights) {
-            if (!light->physical() || !light->worth_sampling_in_paths()) {
+        for (std::size_t index = 0; index < world.lights.size(); ++index) {
+            const Light& light = *world.lights[index];
+            if (!light.physical() || !light.worth_sampling_in_paths()) {
                 continue;
             }
             const Point2 u = samples.next_2d();
-            const std::optional<LightSample> ls = light->sample(at, u);
+            const std::optional<LightSample> ls =
+                visibility_ ? visibility_->sample(index, light, at, u) : light.sample(at, u);
             if (!ls || ls->radiance.is_black() || ls->pdf <= 0) {
                 continue;
             }

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "glint/integrator/integrator.hpp"
+#include "glint/integrator/light_visibility.hpp"
 
 namespace glint {
 
@@ -13,13 +14,29 @@ namespace glint {
 // throughput has fallen below 1/4 with probability 1 − 4 · max throughput. Beer's law along rays inside
 // absorbing objects. max_depth counts bounces: 1 is direct light only. Ambient and ambient-occlusion lights
 // are left out (they stand in for the indirect light the path tracer computes).
+//
+// Sphere lights that the view sees only in part (smallpt's, buried in its ceiling) are sampled with
+// what LightVisibility learns before the first sample (`learn_light_visibility`, on by default).
 class PathIntegrator final : public Integrator {
   public:
-    explicit PathIntegrator(int max_depth) : max_depth_(max_depth) {}
+    explicit PathIntegrator(int max_depth, bool learn_light_visibility = true)
+        : max_depth_(max_depth), learn_light_visibility_(learn_light_visibility) {}
     Rgb radiance(const World& world, const Ray& ray, SampleStream& samples, RayCounters& rays) const override;
+    // A copy that samples the sphere lights with what LightVisibility learns of this view; nullptr
+    // when learning is off or finds nothing to favour.
+    std::unique_ptr<Integrator> prepared(const World& world, const Camera& camera,
+                                         FilmSize film) const override;
+    // What the copy made by prepared() learnt (nullptr for this integrator as built).
+    const LightVisibility* light_visibility() const { return visibility_.get(); }
 
   private:
+    // Light::pdf of world.lights[index], with what was learnt of it.
+    double light_pdf_of(const World& world, std::size_t index, const Hit& at, const Vec3& wi,
+                        const Hit* on_light) const;
+
     int max_depth_;
+    bool learn_light_visibility_;
+    std::shared_ptr<const LightVisibility> visibility_;  // shared by copies; never changed once learnt
 };
 
 // Veach's power heuristic (β = 2) for one sample from each of two strategies.

@@ -27,15 +27,16 @@ AreaLight::AreaLight(const Shape& shape, const Material& material, int samples)
 
 std::optional<LightSample> AreaLight::sample(const Hit& at, Point2 u) const {
     const std::optional<SeenSample> seen = shape_->sample_seen_from(at.point, u);
-    if (!seen) {
-        return std::nullopt;
-    }
+    return seen ? sample_of(*seen) : std::nullopt;
+}
+
+std::optional<LightSample> AreaLight::sample_of(const SeenSample& seen) const {
     LightSample s;
     s.delta = false;
-    s.wi = seen->wi;
-    s.position = seen->point;
-    s.pdf = seen->pdf_solid_angle;
-    s.radiance = material_->emitted(light_hit(s.position, seen->normal), -s.wi);
+    s.wi = seen.wi;
+    s.position = seen.point;
+    s.pdf = seen.pdf_solid_angle;
+    s.radiance = material_->emitted(light_hit(s.position, seen.normal), -s.wi);
     if (s.radiance.is_black() || !std::isfinite(s.pdf)) {
         return std::nullopt;
     }

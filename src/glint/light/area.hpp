@@ -23,6 +23,10 @@ class AreaLight final : public Light {
     std::optional<LightSample> sample(const Hit& at, Point2 u) const override;
     double pdf(const Hit& at, const Vec3& wi, const Hit* on_light) const override;
     int samples() const override { return samples_; }
+    // The light sample of a point of the shape that another strategy chose (`seen`: the point, its
+    // normal, the direction from the shading point and that strategy's density): what sample() returns
+    // for the point the shape itself chooses.
+    std::optional<LightSample> sample_of(const SeenSample& seen) const;
     const Shape& shape() const { return *shape_; }
 
     // {type: area, shape: {type: …, …}, radiance: L, scale: 1, two_sided: false, samples: 1}

@@ -51,6 +51,9 @@ void ProgressiveRender::plan() {
     if (!view_.camera || !view_.sampler || !view_.integrator) {
         throw std::invalid_argument("render: the view has no camera, sampler or integrator");
     }
+    prepared_integrator_ =
+        view_.integrator->prepared(world_, *view_.camera, {view_.settings.width, view_.settings.height});
+    integrator_ = prepared_integrator_ ? prepared_integrator_.get() : view_.integrator.get();
     target_ = view_.sampler->samples_per_pixel();
     const int size = std::max(1, view_.settings.tile_size);
     for (int y = 0; y < film_.height(); y += size) {
@@ -78,7 +81,7 @@ bool ProgressiveRender::next_pass(const CancelCheck& cancelled, const TileDone& 
         for (int y = tile.y0; y < tile.y1; ++y) {
             for (int x = tile.x0; x < tile.x1; ++x) {
                 for (std::uint32_t s = first; s < first + count; ++s) {
-                    const Rgb radiance = render_sample(world_, view_, x, y, s, tally.rays);
+                    const Rgb radiance = render_sample(world_, view_, *integrator_, x, y, s, tally.rays);
                     if (!radiance.is_finite()) {
                         if (tally.nonfinite++ == 0) {
                             tally.first_x = x;
@@ -134,7 +137,7 @@ bool ProgressiveRender::coarse_preview(int block, Image& out, const CancelCheck&
         for (int i = 0; i < blocks_x; ++i) {
             const int x0 = i * block, y0 = static_cast<int>(j) * block;
             const int x1 = std::min(x0 + block, width), y1 = std::min(y0 + block, height);
-            Rgb c = render_sample(world_, view_, (x0 + x1) / 2, (y0 + y1) / 2, 0, row_rays[j]);
+            Rgb c = render_sample(world_, view_, *integrator_, (x0 + x1) / 2, (y0 + y1) / 2, 0, row_rays[j]);
             if (!c.is_finite()) {
                 c = Rgb(1.0, 0.0, 1.0);
             }

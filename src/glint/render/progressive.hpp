@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <vector>
 
 #include "glint/image/film.hpp"
@@ -47,6 +48,9 @@ class ProgressiveRender {
     bool coarse_preview(int block, Image& out, const CancelCheck& cancelled = {});
 
     const Film& film() const { return film_; }
+    // The integrator every sample is traced with: the view's, prepared for the world
+    // (Integrator::prepared) once, when this object is made.
+    const Integrator& integrator() const { return *integrator_; }
     // Rays, time and the non-finite samples of the passes so far; samples_per_pixel = samples_done().
     RenderStats stats() const;
     double seconds() const { return seconds_; }  // time spent in passes so far
@@ -66,6 +70,8 @@ class ProgressiveRender {
 
     const World& world_;
     const View& view_;
+    std::unique_ptr<Integrator> prepared_integrator_;  // nullptr: the view's own is used
+    const Integrator* integrator_ = nullptr;
     Film own_film_;
     Film& film_;
     std::vector<Tile> tiles_;

@@ -9,8 +9,8 @@
 
 namespace glint {
 
-Rgb render_sample(const World& world, const View& view, int x, int y, std::uint32_t sample,
-                  RayCounters& rays) {
+Rgb render_sample(const World& world, const View& view, const Integrator& integrator, int x, int y,
+                  std::uint32_t sample, RayCounters& rays) {
     // Hashed once here; every dimension of the path then costs the sampler one mix.
     const SampleHashes key(
         SampleKey{view.settings.seed, static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y), sample});
@@ -21,7 +21,7 @@ Rgb render_sample(const World& world, const View& view, int x, int y, std::uint3
         return Rgb{};  // outside the camera's image (a fisheye's corners): black, nothing traced
     }
     SampleStream stream(*view.sampler, key, kFirstIntegratorDimension);
-    return view.integrator->radiance(world, ray, stream, rays);
+    return integrator.radiance(world, ray, stream, rays);
 }
 
 RenderStats render(const World& world, const View& view, Film& film, const RenderCallbacks& callbacks) {

@@ -42,8 +42,9 @@ struct RenderCallbacks {
 // any thread count or tile size.
 RenderStats render(const World& world, const View& view, Film& film, const RenderCallbacks& callbacks = {});
 
-// The radiance of one sample: what the render loop adds to the film for (pixel, sample index).
-Rgb render_sample(const World& world, const View& view, int x, int y, std::uint32_t sample,
-                  RayCounters& rays);
+// The radiance of one sample: what the render loop adds to the film for (pixel, sample index), traced
+// by `integrator` (the loop's: view.integrator prepared for the world, ProgressiveRender::integrator()).
+Rgb render_sample(const World& world, const View& view, const Integrator& integrator, int x, int y,
+                  std::uint32_t sample, RayCounters& rays);
 
 }  // namespace glint

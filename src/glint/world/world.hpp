@@ -37,9 +37,13 @@ struct World {
     const Material& material(const Hit& hit) const { return *materials[shape_materials[hit.primitive]]; }
     // Radiance seen along a ray that leaves the world in direction `dir`.
     Rgb escaped(const Vec3& dir) const { return environment ? environment->escaped(dir) : background; }
-    // The light a hit surface belongs to (an emitting shape), or nullptr.
+    // The index in `lights` of the light a hit surface belongs to (an emitting shape), or -1.
+    std::int32_t light_index_of(const Hit& hit) const {
+        return hit.primitive < shape_lights.size() ? shape_lights[hit.primitive] : -1;
+    }
+    // The light a hit surface belongs to, or nullptr.
     const Light* light_of(const Hit& hit) const {
-        const std::int32_t i = hit.primitive < shape_lights.size() ? shape_lights[hit.primitive] : -1;
+        const std::int32_t i = light_index_of(hit);
         return i < 0 ? nullptr : lights[static_cast<std::size_t>(i)].get();
     }
 };
