@@ -1,10 +1,13 @@
 // Ray accelerators raced: glint's BVH against Embree, single rays, 2 threads, on the bunny (69 k
 // triangles), the dragon subdivided to 1.6 M triangles, and 100 k spheres; for each, primary rays,
 // diffuse-bounce rays (cosine-distributed from the primary hits) and shadow rays (towards a point
-// light). Also: BVH build rate and bytes per triangle, and how the cost per ray grows from 1 k to
-// 1 M triangles (UV spheres of exactly 1 024 and 1 048 576 triangles; also 2 k to 2 M, subdivided
-// octahedra, whose triangles are roughly uniform, no slivers at the poles). Ratios are printed at the end of
-// the run, from the medians when the runs are repeated:
+// light). Also book 2's Cornell box (examples/rtiow-cornell.yaml: quads and two transformed boxes), with
+// the rays a render of it traces: its camera's, a bounce from each hit and shadow rays to points of its
+// light, so that bench-peers can set its whole-render rate against this kernel rate. Also: BVH build rate and
+// bytes per triangle, and how the cost per ray grows from 1 k to 1 M triangles (UV spheres of exactly 1 024
+// and 1 048 576 triangles; also 2 k to 2 M, subdivided octahedra, whose triangles are roughly uniform, no
+// slivers at the poles). Ratios are printed at the end of the run, from the medians when the runs are
+// repeated:
 //   ./build/release/bench/glint_bench_accel [--benchmark_repetitions=3]
 //
 // The bunny and the dragon are optional data (not in the repository): they are read from
@@ -23,12 +26,16 @@
 #include <map>
 #include <optional>
 #include <random>
+#include <stdexcept>
 
 #include "glint/accel/bvh.hpp"
 #include "glint/accel/embree.hpp"
 #include "glint/core/frame.hpp"
 #include "glint/geometry/mesh.hpp"
 #include "glint/geometry/sphere.hpp"
+#include "glint/light/area.hpp"
+#include "glint/scene/scene.hpp"
+#include "glint/scene/scene_desc.hpp"
 
 namespace {
 
@@ -45,6 +52,7 @@ struct RaySet {
 
 struct BenchScene {
     std::vector<std::unique_ptr<Shape>> shapes;
+    std::shared_ptr<const World> world;  // a scene file's world, whose shapes are raced instead
     std::vector<const Shape*> pointers;
     std::unique_ptr<Accelerator> bvh, embree;
     std::map<std::string, RaySet> ray_sets;  // "primary", "diffuse", "shadow"
@@ -185,43 +193,89 @@ const MeshSource& large_mesh() {
     return source;
 }
 
-void make_rays(BenchScene& scene) {
-    const Bounds3 box = scene.bvh->bounds();
-    const Vec3 center = box.center();
-    const double size = length(box.extent());
-    // A camera on a diagonal, looking at the centre, its 512 × 128 image spanning the bounds.
-    const Vec3 eye = center + Vec3{0.3, 0.4, 1.0} * (1.1 * size);
-    const Frame frame = Frame::from_normal(normalize(center - eye));
-    const Vec3 light = center + Vec3{-0.5, 1.5, 0.5} * size;
+// The three ray sets: `camera(x, y)` gives the primary ray of each pixel of an image of width × height
+// = kRaysPerSet pixels, `light(u, v)` the point of the light that a shadow ray from the pixel's hit
+// goes to.
+void make_rays(BenchScene& scene, int width, const std::function<Ray(int, int)>& camera,
+               const std::function<Vec3(double, double)>& light) {
     std::mt19937_64 rng(1);
     std::uniform_real_distribution<double> u(0, 1);
     RaySet primary, diffuse, shadow;
     shadow.shadow = true;
-    const int width = 512, height = static_cast<int>(kRaysPerSet / 512);
+    const int height = static_cast<int>(kRaysPerSet / static_cast<std::size_t>(width));
     for (int y = 0; y < height; ++y) {
         for (int x = 0; x < width; ++x) {
-            const double sx = (x + 0.5) / width - 0.5, sy = (y + 0.5) / height - 0.5;
-            const Vec3 dir = normalize(
-                frame.n + 0.55 * (sx * frame.s + sy * frame.t * (static_cast<double>(height) / width)));
-            const Ray ray{eye, dir};
+            const Ray ray = camera(x, y);
             primary.rays.push_back(ray);
             Hit hit;
             if (!scene.bvh->intersect(ray, kInf, hit)) {
                 continue;
             }
-            const Vec3 n = dot(hit.normal, dir) < 0 ? hit.normal : -hit.normal;
+            const Vec3 n = dot(hit.normal, ray.direction) < 0 ? hit.normal : -hit.normal;
             // Cosine-distributed about the normal (Malley's method).
             const double r = std::sqrt(u(rng)), phi = 2 * kPi * u(rng);
             const Frame local = Frame::from_normal(n);
             const Vec3 bounce =
                 local.to_world({r * std::cos(phi), r * std::sin(phi), std::sqrt(std::max(0.0, 1 - r * r))});
             diffuse.rays.push_back(spawn_ray(hit, bounce));
-            shadow.rays.push_back(spawn_ray_to(hit, light));
+            const double lu = u(rng), lv = u(rng);
+            shadow.rays.push_back(spawn_ray_to(hit, light(lu, lv)));
         }
     }
     scene.ray_sets["primary"] = std::move(primary);
     scene.ray_sets["diffuse"] = std::move(diffuse);
     scene.ray_sets["shadow"] = std::move(shadow);
+}
+
+// The rays of a generated scene: a camera on a diagonal, looking at the centre, its 512 × 128 image
+// spanning the bounds, and a point light above.
+void make_rays(BenchScene& scene) {
+    const Bounds3 box = scene.bvh->bounds();
+    const Vec3 center = box.center();
+    const double size = length(box.extent());
+    const Vec3 eye = center + Vec3{0.3, 0.4, 1.0} * (1.1 * size);
+    const Frame frame = Frame::from_normal(normalize(center - eye));
+    const Vec3 light = center + Vec3{-0.5, 1.5, 0.5} * size;
+    const int width = 512, height = static_cast<int>(kRaysPerSet / 512);
+    make_rays(
+        scene, width,
+        [&](int x, int y) {
+            const double sx = (x + 0.5) / width - 0.5, sy = (y + 0.5) / height - 0.5;
+            return Ray{
+                eye, normalize(frame.n +
+                               0.55 * (sx * frame.s + sy * frame.t * (static_cast<double>(height) / width)))};
+        },
+        [&](double, double) { return light; });
+}
+
+// Book 2's Cornell box as examples/rtiow-cornell.yaml builds it, with its camera's rays through a
+// 256 × 256 grid of its 400 × 400 image and shadow rays to uniform points of its light.
+std::unique_ptr<BenchScene> cornell_scene() {
+    auto scene = std::make_unique<BenchScene>();
+    const Scene built = build_scene(load_scene_file(GLINT_SOURCE_DIR "/examples/rtiow-cornell.yaml"));
+    scene->world = built.world;
+    for (const auto& shape : built.world->shapes) {
+        scene->pointers.push_back(shape.get());
+    }
+    scene->bvh = std::make_unique<BvhAccelerator>(scene->pointers);
+#ifdef GLINT_HAVE_EMBREE
+    scene->embree = std::make_unique<EmbreeAccelerator>(scene->pointers);
+#endif
+    const auto* light = dynamic_cast<const AreaLight*>(built.world->lights.at(0).get());
+    if (light == nullptr) {
+        throw std::runtime_error("rtiow-cornell.yaml's first light is not an area light");
+    }
+    const int grid = 256;
+    const double scale = static_cast<double>(built.view.settings.width) / grid;
+    make_rays(
+        *scene, grid,
+        [&](int x, int y) {
+            return built.view.camera->generate_ray({(x + 0.5) * scale, (y + 0.5) * scale}, {0.5, 0.5});
+        },
+        [&](double u, double v) {
+            return light->shape().sample_area({u, v})->point;
+        });
+    return scene;
 }
 
 std::unique_ptr<BenchScene> finish(std::unique_ptr<BenchScene> scene, bool with_embree) {
@@ -265,6 +319,9 @@ BenchScene& scene(const std::string& name) {
                 s->shapes.push_back(std::make_unique<Sphere>(Vec3{100 * u(rng), 100 * u(rng), 100 * u(rng)},
                                                              0.3 + 0.7 * u(rng)));
             }
+        } else if (name == "cornell") {
+            slot = cornell_scene();
+            return *slot;
         } else if (name == "sphere1k") {
             s->shapes.push_back(std::make_unique<Mesh>(uv_sphere(32, 17)));  // 1 024 triangles
             with_embree = false;
@@ -344,7 +401,8 @@ void BM_BuildLargeMesh(benchmark::State& state) {
 }
 
 void register_all() {
-    for (const std::string& name : {small_mesh().name, large_mesh().name, std::string("spheres100k")}) {
+    for (const std::string& name :
+         {small_mesh().name, large_mesh().name, std::string("spheres100k"), std::string("cornell")}) {
         for (const char* kind : {"primary", "diffuse", "shadow"}) {
             for (bool embree : {false, true}) {
                 const std::string label =
