@@ -16,14 +16,17 @@ void BvhAccelerator::ShapeList::add(const Shape* shape, std::uint32_t index) {
                    sphere != nullptr ? LeafSphere{sphere->center(), sphere->radius()} : LeafSphere{});
     shapes.push_back(shape);
     scene_index.push_back(index);
+    sphere_count += sphere != nullptr ? 1 : 0;
 }
 
 namespace {
 
-// Four at a time pays for the flat list only, and only from three entries. Measured (user time, medians
+// Four at a time pays for the flat list only, and only from three spheres. Measured (user time, medians
 // of 5): smallpt's nine spheres render 11–13 % faster; in tree leaves (at most 4 shapes, often 1 or 2)
 // it gained nothing (RTIOW's final scene: +6 % time from one entry, +1 % from two, +0.4 % from three;
-// the accelerator benchmark's 100 k spheres within ±3 %), so leaves stay one at a time.
+// the accelerator benchmark's 100 k spheres within ±3 %), so leaves stay one at a time. A list of other
+// shapes gains nothing from it either: the Cornell box's quads and boxes spent 8 % of the render's
+// instructions on groups whose lanes held no sphere.
 constexpr std::uint32_t kFewestSpheresForFour = 3;
 
 #ifdef GLINT_BVH_HAVE_AVX2_PATH
@@ -299,12 +302,12 @@ __attribute__((target("avx2"))) bool BvhAccelerator::occluded_avx2(const Ray& ra
 }
 #endif
 
-// The flat list's spheres four at a time when it is long enough and the CPU has AVX2 (the switch the
+// The flat list's spheres four at a time when it has enough of them and the CPU has AVX2 (the switch the
 // tree's traversal uses, which tests force off to compare both paths); otherwise exactly the code
 // there was before.
 bool BvhAccelerator::intersect(const Ray& ray, double t_max, Hit& hit) const {
 #ifdef GLINT_BVH_HAVE_AVX2_PATH
-    if (direct_.size() >= kFewestSpheresForFour && WideBvh::uses_avx2()) {
+    if (direct_.sphere_count >= kFewestSpheresForFour && WideBvh::uses_avx2()) {
         return intersect_avx2(ray, t_max, hit);
     }
 #endif
@@ -313,7 +316,7 @@ bool BvhAccelerator::intersect(const Ray& ray, double t_max, Hit& hit) const {
 
 bool BvhAccelerator::occluded(const Ray& ray, double t_max) const {
 #ifdef GLINT_BVH_HAVE_AVX2_PATH
-    if (direct_.size() >= kFewestSpheresForFour && WideBvh::uses_avx2()) {
+    if (direct_.sphere_count >= kFewestSpheresForFour && WideBvh::uses_avx2()) {
         return occluded_avx2(ray, t_max);
     }
 #endif

@@ -52,6 +52,7 @@ class BvhAccelerator final : public Accelerator {
         std::vector<LeafSphere> spheres = std::vector<LeafSphere>(kSpherePadding);
         std::vector<const Shape*> shapes;
         std::vector<std::uint32_t> scene_index;
+        std::size_t sphere_count = 0;  // the flat list tests four at a time only when it has a few
         void add(const Shape* shape, std::uint32_t index);
         std::size_t size() const { return shapes.size(); }
     };
