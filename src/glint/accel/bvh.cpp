@@ -281,7 +281,9 @@ bool BvhAccelerator::intersect_with(const Ray& ray, double t_max, Hit& hit) cons
         nearest_sphere_t = t;
         nearest_list = &list;
         nearest_sphere = i;
-        nearest_is_rectangle = false;
+        if constexpr (kFourSpheres) {  // (only the four-at-a-time path meets rectangles inline)
+            nearest_is_rectangle = false;
+        }
     };
     const auto test_other = [&](const ShapeList& list, std::uint32_t i, double& t_limit) {
         if (!list.shapes[i]->intersect(ray, t_limit, hit)) {
@@ -290,7 +292,9 @@ bool BvhAccelerator::intersect_with(const Ray& ray, double t_max, Hit& hit) cons
         t_limit = hit.t;
         hit.primitive = list.scene_index[i];
         nearest_list = nullptr;
-        nearest_is_rectangle = false;
+        if constexpr (kFourSpheres) {
+            nearest_is_rectangle = false;
+        }
         return true;
     };
     // Entries [first, first + count) in order, each lowering t_limit to its hit: the first of equal
@@ -342,7 +346,7 @@ bool BvhAccelerator::intersect_with(const Ray& ray, double t_max, Hit& hit) cons
                 return test_range(leaves_, first, count, t_limit, std::false_type{});
             });
     }
-    if (nearest_is_rectangle) {
+    if (kFourSpheres && nearest_is_rectangle) {
         nearest_list->shapes[nearest_sphere]->intersect(ray, ray_t_max, hit);
         hit.primitive = nearest_list->scene_index[nearest_sphere];
     } else if (nearest_list != nullptr) {
