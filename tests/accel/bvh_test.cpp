@@ -9,6 +9,8 @@
 #include "accel/accel_test_scenes.hpp"
 #include "glint/accel/bvh.hpp"
 #include "glint/accel/linear.hpp"
+#include "glint/geometry/box.hpp"
+#include "glint/geometry/instance.hpp"
 #include "glint/geometry/mesh_io/mesh_data.hpp"
 #include "glint/geometry/plane.hpp"
 #include "glint/geometry/rectangle.hpp"
@@ -484,6 +486,93 @@ TEST(Bvh, CoordinatesBeyondFloatRangeOrTinyStillHit) {
             EXPECT_TRUE(bvh.occluded(ray, kInf));
         }
     }
+}
+
+// The flat list tests its rectangles four at a time with AVX2 too (Rectangle::solve lane by lane); the
+// answers must be the one-at-a-time loop's bits. A closed Cornell-like room (walls sharing their edges,
+// so rays meet exact ties and hit edges and corners), a light just below the ceiling, rotated boxes
+// (instances, tested by their own intersect in their place in the list), a sphere or two; rays from
+// inside, from points on the walls, parallel to walls (a zero denominator), and aimed at edges.
+TEST(Bvh, RectanglesFourAtATimeGiveTheOneAtATimeBits) {
+    if (!WideBvh::cpu_has_avx2()) {
+        GTEST_SKIP() << "no AVX2 on this CPU: only the one-at-a-time path exists";
+    }
+    std::mt19937_64 rng(555);
+    std::uniform_real_distribution<double> unit(0, 1);
+    const double s = 555;
+    int rectangle_hits = 0;
+    int other_hits = 0;
+    for (int scene = 0; scene < 6; ++scene) {
+        std::vector<std::unique_ptr<Shape>> shapes;
+        shapes.push_back(std::make_unique<Rectangle>(Vec3{s, 0, 0}, Vec3{0, s, 0}, Vec3{0, 0, s}));
+        shapes.push_back(std::make_unique<Rectangle>(Vec3{0, 0, 0}, Vec3{0, s, 0}, Vec3{0, 0, s}));
+        shapes.push_back(std::make_unique<Rectangle>(Vec3{0, 0, 0}, Vec3{s, 0, 0}, Vec3{0, 0, s}));
+        shapes.push_back(std::make_unique<Rectangle>(Vec3{s, s, s}, Vec3{-s, 0, 0}, Vec3{0, 0, -s}));
+        shapes.push_back(std::make_unique<Rectangle>(Vec3{0, 0, s}, Vec3{s, 0, 0}, Vec3{0, s, 0}));
+        if (scene % 2 == 0) {
+            shapes.push_back(std::make_unique<Instance>(
+                std::make_unique<Box>(Vec3{0, 0, 0}, Vec3{165, 330, 165}),
+                Transform::rotate({0, 1, 0}, 15).then(Transform::translate({265, 0, 295}))));
+        }
+        if (scene >= 2) {
+            shapes.push_back(std::make_unique<Sphere>(Vec3{150, 100, 150}, 60 + 10 * scene));
+        }
+        shapes.push_back(std::make_unique<Instance>(
+            std::make_unique<Box>(Vec3{0, 0, 0}, Vec3{165, 165, 165}),
+            Transform::rotate({0, 1, 0}, -18).then(Transform::translate({130, 0, 65}))));
+        shapes.push_back(
+            std::make_unique<Rectangle>(Vec3{343, 554, 332}, Vec3{-130, 0, 0}, Vec3{0, 0, -105}));
+        if (scene >= 4) {
+            // A duplicate of a wall: exact ties in t, which the first in list order wins.
+            shapes.push_back(std::make_unique<Rectangle>(Vec3{0, 0, s}, Vec3{s, 0, 0}, Vec3{0, s, 0}));
+        }
+        const auto ptrs = pointers(shapes);
+        const BvhAccelerator flat(ptrs, ptrs.size());
+        ASSERT_EQ(flat.flat_count(), ptrs.size());
+        for (int r = 0; r < 20000; ++r) {
+            Vec3 origin = random_in_box(rng, {1, 1, 1}, {s - 1, s - 1, s - 1});
+            Vec3 direction = random_direction(rng);
+            switch (r % 5) {
+                case 1:  // from a point on a wall, the floor or the ceiling
+                    origin[static_cast<int>(rng() % 3)] = rng() % 2 == 0 ? 0.0 : s;
+                    break;
+                case 2:  // parallel to a wall
+                    direction[static_cast<int>(rng() % 3)] = 0;
+                    direction = normalize(direction);
+                    break;
+                case 3: {  // at an edge or corner of the room
+                    Vec3 target{unit(rng) * s, unit(rng) * s, unit(rng) * s};
+                    target[0] = rng() % 2 == 0 ? 0.0 : s;
+                    target[1] = rng() % 2 == 0 ? 0.0 : s;
+                    direction = normalize(target - origin);
+                    break;
+                }
+                case 4:  // from outside the room
+                    origin = random_in_box(rng, {-600, -600, -900}, {1200, 1200, 1200});
+                    direction = normalize(random_in_box(rng, {0, 0, 0}, {s, s, s}) - origin);
+                    break;
+                default:
+                    break;
+            }
+            const Ray ray{origin, direction};
+            const double t_max = r % 7 == 0 ? 300 * unit(rng) : kInf;
+            Hit scalar_hit, vector_hit;
+            WideBvh::force_scalar_traversal(true);
+            const bool scalar_found = flat.intersect(ray, t_max, scalar_hit);
+            const bool scalar_occluded = flat.occluded(ray, t_max);
+            WideBvh::force_scalar_traversal(false);
+            const bool vector_found = flat.intersect(ray, t_max, vector_hit);
+            ASSERT_EQ(vector_found, scalar_found) << scene << " " << r;
+            EXPECT_EQ(flat.occluded(ray, t_max), scalar_occluded) << scene << " " << r;
+            if (scalar_found) {
+                ++(dynamic_cast<const Rectangle*>(ptrs[scalar_hit.primitive]) ? rectangle_hits : other_hits);
+                expect_identical_hits(vector_hit, scalar_hit, false);
+            }
+        }
+    }
+    WideBvh::force_scalar_traversal(false);
+    EXPECT_GT(rectangle_hits, 60000);
+    EXPECT_GT(other_hits, 5000);
 }
 
 TEST(Bvh, ScalarTraversalGivesTheSameHitsAsAvx2) {

@@ -5,6 +5,7 @@
 #include <limits>
 #include <type_traits>
 
+#include "glint/geometry/rectangle.hpp"
 #include "glint/geometry/sphere.hpp"
 
 namespace glint {
@@ -14,16 +15,42 @@ void BvhAccelerator::ShapeList::add(const Shape* shape, std::uint32_t index) {
     // Before the padding, which stays at the end.
     spheres.insert(spheres.end() - kSpherePadding,
                    sphere != nullptr ? LeafSphere{sphere->center(), sphere->radius()} : LeafSphere{});
+    sphere_count += sphere != nullptr ? 1 : 0;
+    if (with_rectangles) {
+        const std::size_t i = shapes.size();
+        if (i % 4 == 0) {
+            rectangles.emplace_back();
+        }
+        if (spheres[i].radius > 0) {
+            rectangles.back().spheres |= 1u << (i % 4);
+        }
+        if (const auto* rectangle = dynamic_cast<const Rectangle*>(shape)) {
+            RectangleBlock& block = rectangles.back();
+            const int lane = static_cast<int>(i % 4);
+            for (int axis = 0; axis < 3; ++axis) {
+                block.corner[axis][lane] = rectangle->corner()[axis];
+                block.normal[axis][lane] = rectangle->normal()[axis];
+                block.dual1[axis][lane] = rectangle->dual1()[axis];
+                block.dual2[axis][lane] = rectangle->dual2()[axis];
+            }
+            block.rectangles |= 1u << lane;
+            ++rectangle_count;
+        }
+    }
     shapes.push_back(shape);
     scene_index.push_back(index);
 }
 
 namespace {
 
-// Four at a time pays for the flat list only, and only from three entries. Measured (user time, medians
-// of 5): smallpt's nine spheres render 11–13 % faster; in tree leaves (at most 4 shapes, often 1 or 2)
+// Four at a time pays for the flat list only, and only from three spheres and rectangles. Measured
+// (user time, medians of 5): smallpt's nine spheres render 11–13 % faster, the Cornell box of RTIOW
+// book 2 (six rectangles, two instanced boxes) 5 %; in tree leaves (at most 4 shapes, often 1 or 2)
 // it gained nothing (RTIOW's final scene: +6 % time from one entry, +1 % from two, +0.4 % from three;
-// the accelerator benchmark's 100 k spheres within ±3 %), so leaves stay one at a time.
+// the accelerator benchmark's 100 k spheres within ±3 %; leaves laid out as blocks of four, field by
+// field, without the transpose: +6 % time when every leaf went four at a time, ±0 from three entries),
+// so leaves stay one at a time. A list of other shapes gains nothing from it either: the Cornell box's
+// quads and boxes spent 8 % of the render's instructions on sphere lanes that held no sphere.
 constexpr std::uint32_t kFewestSpheresForFour = 3;
 
 #ifdef GLINT_BVH_HAVE_AVX2_PATH
@@ -34,7 +61,7 @@ constexpr std::uint32_t kFewestSpheresForFour = 3;
 struct SphereLanes {
     alignas(32) double t[4];
     unsigned sphere;  // lanes whose record is a sphere (radius > 0)
-    unsigned hit;     // sphere lanes hit with t in (0, t_limit)
+    unsigned hit;     // sphere (and rectangle) lanes hit with t in (0, t_limit)
     unsigned other;   // lanes of other shapes (set by test_group)
 };
 
@@ -47,6 +74,9 @@ __attribute__((target("avx2"))) inline __m256d sub(__m256d p, __m256d q) {
 }
 __attribute__((target("avx2"))) inline __m256d mul(__m256d p, __m256d q) {
     return _mm256_mul_pd(p, q);
+}
+__attribute__((target("avx2"))) inline __m256d load(const double* p) {
+    return _mm256_load_pd(p);
 }
 // dot(p, q) = p.x q.x + p.y q.y + p.z q.z, added left to right as vec.hpp does.
 __attribute__((target("avx2"))) inline __m256d dot3(__m256d px, __m256d py, __m256d pz, __m256d qx,
@@ -117,17 +147,80 @@ __attribute__((target("avx2"))) inline SphereLanes test_sphere_lanes(const doubl
     return lanes;
 }
 
+// Four rectangles of a block tested against a ray at once: Rectangle::solve in each lane, operation for
+// operation in the same order (no FMA, as above), so each lane's t is the scalar function's. Returns the
+// lanes hit with t in (0, t_limit); their t's replace those lanes of `t_lanes`, the others are kept.
+// (Blended and stored whole: a masked store, whose result the lane walk then reads back, stalled
+// the loads on AMD's Zen and made the Cornell box 4 % slower.)
+template <class Block>
+__attribute__((target("avx2"))) inline unsigned test_rectangle_lanes(const Block& block, const Ray& ray,
+                                                                     double t_limit, double* t_lanes) {
+    const __m256d nx = load(block.normal[0]), ny = load(block.normal[1]), nz = load(block.normal[2]);
+    const __m256d cx = load(block.corner[0]), cy = load(block.corner[1]), cz = load(block.corner[2]);
+    const __m256d ox = _mm256_set1_pd(ray.origin.x);
+    const __m256d oy = _mm256_set1_pd(ray.origin.y);
+    const __m256d oz = _mm256_set1_pd(ray.origin.z);
+    const __m256d dx = _mm256_set1_pd(ray.direction.x);
+    const __m256d dy = _mm256_set1_pd(ray.direction.y);
+    const __m256d dz = _mm256_set1_pd(ray.direction.z);
+    const __m256d zero = _mm256_setzero_pd();
+    // plane_hit_t: a ray parallel to the plane (denominator 0) misses.
+    const __m256d denominator = dot3(dx, dy, dz, nx, ny, nz);
+    const __m256d t = _mm256_div_pd(dot3(sub(cx, ox), sub(cy, oy), sub(cz, oz), nx, ny, nz), denominator);
+    // Hit when !(denominator == 0), t > 0 and !(t >= t_limit).
+    __m256d hit = _mm256_cmp_pd(denominator, zero, _CMP_NEQ_UQ);
+    hit = _mm256_and_pd(hit, _mm256_cmp_pd(t, zero, _CMP_GT_OQ));
+    hit = _mm256_and_pd(hit, _mm256_cmp_pd(t, _mm256_set1_pd(t_limit), _CMP_NGE_UQ));
+    if (_mm256_movemask_pd(hit) == 0) {
+        return 0;
+    }
+    // point_on_plane: p = O + t D, moved along n onto the plane.
+    __m256d px = add(ox, mul(t, dx));
+    __m256d py = add(oy, mul(t, dy));
+    __m256d pz = add(oz, mul(t, dz));
+    const __m256d offset = dot3(sub(px, cx), sub(py, cy), sub(pz, cz), nx, ny, nz);
+    px = sub(px, mul(nx, offset));
+    py = sub(py, mul(ny, offset));
+    pz = sub(pz, mul(nz, offset));
+    const __m256d qx = sub(px, cx), qy = sub(py, cy), qz = sub(pz, cz);
+    const __m256d a = dot3(qx, qy, qz, load(block.dual1[0]), load(block.dual1[1]), load(block.dual1[2]));
+    const __m256d b = dot3(qx, qy, qz, load(block.dual2[0]), load(block.dual2[1]), load(block.dual2[2]));
+    // Inside unless a < 0, a > 1, b < 0 or b > 1.
+    const __m256d one = _mm256_set1_pd(1.0);
+    hit = _mm256_and_pd(hit, _mm256_cmp_pd(a, zero, _CMP_NLT_UQ));
+    hit = _mm256_and_pd(hit, _mm256_cmp_pd(a, one, _CMP_NGT_UQ));
+    hit = _mm256_and_pd(hit, _mm256_cmp_pd(b, zero, _CMP_NLT_UQ));
+    hit = _mm256_and_pd(hit, _mm256_cmp_pd(b, one, _CMP_NGT_UQ));
+    _mm256_store_pd(t_lanes, _mm256_blendv_pd(_mm256_load_pd(t_lanes), t, hit));
+    return static_cast<unsigned>(_mm256_movemask_pd(hit));
+}
+
 // The group of (up to) four entries of `list` from i, in a range that ends before `end`: lanes past
-// the end are dropped.
+// the end are dropped. In a list with rectangles (whose groups start at multiples of four), rectangle
+// lanes are tested too and reported with the spheres'.
 template <class ShapeList>
 __attribute__((target("avx2"))) inline SphereLanes test_group(const ShapeList& list, std::uint32_t i,
                                                               std::uint32_t end, const Ray& ray,
                                                               double t_limit) {
-    SphereLanes lanes =
-        test_sphere_lanes(reinterpret_cast<const double*>(list.spheres.data() + i), ray, t_limit);
     const unsigned in_range = (1u << std::min<std::uint32_t>(end - i, 4)) - 1;
+    if (!list.with_rectangles) {
+        SphereLanes lanes =
+            test_sphere_lanes(reinterpret_cast<const double*>(list.spheres.data() + i), ray, t_limit);
+        lanes.hit &= in_range;
+        lanes.other = ~lanes.sphere & in_range;
+        return lanes;
+    }
+    const auto& block = list.rectangles[i / 4];
+    SphereLanes lanes{};  // t's of 0 in lanes that are not hit
+    if ((block.spheres & in_range) != 0) {
+        lanes = test_sphere_lanes(reinterpret_cast<const double*>(list.spheres.data() + i), ray, t_limit);
+    }
+    if ((block.rectangles & in_range) != 0) {
+        lanes.hit |= test_rectangle_lanes(block, ray, t_limit, lanes.t) & block.rectangles;
+    }
+    const unsigned inline_lanes = block.spheres | block.rectangles;
     lanes.hit &= in_range;
-    lanes.other = ~lanes.sphere & in_range;
+    lanes.other = ~inline_lanes & in_range;
     return lanes;
 }
 #endif
@@ -136,6 +229,7 @@ __attribute__((target("avx2"))) inline SphereLanes test_group(const ShapeList& l
 
 BvhAccelerator::BvhAccelerator(std::span<const Shape* const> shapes, std::size_t flat_max_shapes) {
     const auto start = std::chrono::steady_clock::now();
+    direct_.with_rectangles = true;
     std::vector<Bounds3> boxes;
     std::vector<std::uint32_t> bounded;
     for (std::size_t i = 0; i < shapes.size(); ++i) {
@@ -175,14 +269,21 @@ template <bool kFourSpheres>
 bool BvhAccelerator::intersect_with(const Ray& ray, double t_max, Hit& hit) const {
     // The nearest sphere so far (entry `nearest_sphere` of `nearest_list`), if it is nearer than every
     // other hit: its Hit is filled at the end.
+    // A rectangle tested four at a time may be the nearest instead: its own intersect fills the Hit at
+    // the end (it finds the same t).
     const ShapeList* nearest_list = nullptr;
     std::uint32_t nearest_sphere = 0;
     double nearest_sphere_t = 0;
+    bool nearest_is_rectangle = false;
+    const double ray_t_max = t_max;
     const auto take_sphere = [&](const ShapeList& list, std::uint32_t i, double t, double& t_limit) {
         t_limit = t;
         nearest_sphere_t = t;
         nearest_list = &list;
         nearest_sphere = i;
+        if constexpr (kFourSpheres) {  // (only the four-at-a-time path meets rectangles inline)
+            nearest_is_rectangle = false;
+        }
     };
     const auto test_other = [&](const ShapeList& list, std::uint32_t i, double& t_limit) {
         if (!list.shapes[i]->intersect(ray, t_limit, hit)) {
@@ -191,6 +292,9 @@ bool BvhAccelerator::intersect_with(const Ray& ray, double t_max, Hit& hit) cons
         t_limit = hit.t;
         hit.primitive = list.scene_index[i];
         nearest_list = nullptr;
+        if constexpr (kFourSpheres) {
+            nearest_is_rectangle = false;
+        }
         return true;
     };
     // Entries [first, first + count) in order, each lowering t_limit to its hit: the first of equal
@@ -211,6 +315,8 @@ bool BvhAccelerator::intersect_with(const Ray& ray, double t_max, Hit& hit) cons
                         found |= test_other(list, i + lane, t_limit);
                     } else if (lanes.t[lane] < t_limit) {
                         take_sphere(list, i + lane, lanes.t[lane], t_limit);
+                        nearest_is_rectangle =
+                            list.with_rectangles && ((list.rectangles[i / 4].rectangles >> lane) & 1) != 0;
                         found = true;
                     }
                 }
@@ -240,7 +346,10 @@ bool BvhAccelerator::intersect_with(const Ray& ray, double t_max, Hit& hit) cons
                 return test_range(leaves_, first, count, t_limit, std::false_type{});
             });
     }
-    if (nearest_list != nullptr) {
+    if (kFourSpheres && nearest_is_rectangle) {
+        nearest_list->shapes[nearest_sphere]->intersect(ray, ray_t_max, hit);
+        hit.primitive = nearest_list->scene_index[nearest_sphere];
+    } else if (nearest_list != nullptr) {
         // The sphere's own intersect would find the same t; it fills the rest of the Hit from it.
         static_cast<const Sphere*>(nearest_list->shapes[nearest_sphere])
             ->fill_hit(ray, nearest_sphere_t, hit);
@@ -299,12 +408,12 @@ __attribute__((target("avx2"))) bool BvhAccelerator::occluded_avx2(const Ray& ra
 }
 #endif
 
-// The flat list's spheres four at a time when it is long enough and the CPU has AVX2 (the switch the
-// tree's traversal uses, which tests force off to compare both paths); otherwise exactly the code
+// The flat list's spheres and rectangles four at a time when it has enough of them and the CPU has AVX2 (the
+// switch the tree's traversal uses, which tests force off to compare both paths); otherwise exactly the code
 // there was before.
 bool BvhAccelerator::intersect(const Ray& ray, double t_max, Hit& hit) const {
 #ifdef GLINT_BVH_HAVE_AVX2_PATH
-    if (direct_.size() >= kFewestSpheresForFour && WideBvh::uses_avx2()) {
+    if (direct_.sphere_count + direct_.rectangle_count >= kFewestSpheresForFour && WideBvh::uses_avx2()) {
         return intersect_avx2(ray, t_max, hit);
     }
 #endif
@@ -313,7 +422,7 @@ bool BvhAccelerator::intersect(const Ray& ray, double t_max, Hit& hit) const {
 
 bool BvhAccelerator::occluded(const Ray& ray, double t_max) const {
 #ifdef GLINT_BVH_HAVE_AVX2_PATH
-    if (direct_.size() >= kFewestSpheresForFour && WideBvh::uses_avx2()) {
+    if (direct_.sphere_count + direct_.rectangle_count >= kFewestSpheresForFour && WideBvh::uses_avx2()) {
         return occluded_avx2(ray, t_max);
     }
 #endif

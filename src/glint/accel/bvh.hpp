@@ -48,17 +48,30 @@ class BvhAccelerator final : public Accelerator {
     // stays 32 bytes an entry. `spheres` has kSpherePadding more records than there are shapes (radius
     // 0, never tested), so that four records can be read from any entry.
     static constexpr std::size_t kSpherePadding = 3;
+    // The flat list's rectangles, field by field, four entries a block (block g holds entries 4g to
+    // 4g + 3): tested four at a time with AVX2, as Rectangle::solve would test each. Lanes of other
+    // shapes hold zeros and are never read.
+    struct alignas(32) RectangleBlock {
+        double corner[3][4] = {}, normal[3][4] = {}, dual1[3][4] = {}, dual2[3][4] = {};
+        unsigned rectangles = 0;  // the lanes (bit i for entry 4g + i) that are rectangles
+        unsigned spheres = 0;     // and those that are spheres (a block without any skips their test)
+    };
     struct ShapeList {
         std::vector<LeafSphere> spheres = std::vector<LeafSphere>(kSpherePadding);
         std::vector<const Shape*> shapes;
         std::vector<std::uint32_t> scene_index;
+        std::vector<RectangleBlock> rectangles;  // only in a list made with_rectangles (the flat one)
+        bool with_rectangles = false;
+        // The flat list tests four at a time only when it has a few spheres and rectangles.
+        std::size_t sphere_count = 0;
+        std::size_t rectangle_count = 0;
         void add(const Shape* shape, std::uint32_t index);
         std::size_t size() const { return shapes.size(); }
     };
 
-    // The body of intersect and occluded, with the spheres of the flat list tested one at a time or four
-    // at a time with AVX2 (the *_avx2 functions, compiled for AVX2, are called only when the CPU has
-    // it). Both give the same bits. Tree leaves are tested one at a time either way (bvh.cpp says why).
+    // The body of intersect and occluded, with the spheres (and rectangles) of the flat list tested one at a
+    // time or four at a time with AVX2 (the *_avx2 functions, compiled for AVX2, are called only when the CPU
+    // has it). Both give the same bits. Tree leaves are tested one at a time either way (bvh.cpp says why).
     template <bool kFourSpheres>
     bool intersect_with(const Ray& ray, double t_max, Hit& hit) const;
     template <bool kFourSpheres>

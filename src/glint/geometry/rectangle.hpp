@@ -18,6 +18,13 @@ class Rectangle final : public Shape {
 
     static std::unique_ptr<Shape> create(Params& params, const BuildContext& context);
 
+    // What solve() reads, for the scene's flat list, which repeats solve() four rectangles at a time
+    // (accel/bvh.cpp).
+    const Vec3& corner() const { return corner_; }
+    const Vec3& normal() const { return normal_; }
+    const Vec3& dual1() const { return dual1_; }
+    const Vec3& dual2() const { return dual2_; }
+
   private:
     // t of the hit within (0, t_max) and inside the parallelogram, or kInf; `ab` are its (a, b).
     double solve(const Ray& ray, double t_max, Vec3& point, Point2& ab) const;
