@@ -8,7 +8,8 @@ namespace glint {
 // they leave through). Rotated boxes are boxes with a `transform`.
 class Box final : public Shape {
   public:
-    Box(const Vec3& min, const Vec3& max) : min_(min), max_(max) {}
+    Box(const Vec3& min, const Vec3& max)
+        : min_(min), max_(max), max_abs_corner_(std::max(max_component(abs(min)), max_component(abs(max)))) {}
     Bounds3 bounds() const override { return {min_, max_}; }
     bool intersect(const Ray& ray, double t_max, Hit& hit) const override;
     bool occluded(const Ray& ray, double t_max) const override;
@@ -22,6 +23,7 @@ class Box final : public Shape {
     double solve(const Ray& ray, double t_max, int& axis, int& side) const;
 
     Vec3 min_, max_;
+    double max_abs_corner_;  // the largest coordinate magnitude of the box, for the hits' error bound
 };
 
 }  // namespace glint
