@@ -53,6 +53,11 @@ double Box::solve(const Ray& ray, double t_max, int& axis, int& side) const {
 }
 
 bool Box::intersect(const Ray& ray, double t_max, Hit& hit) const {
+    int face = 0;
+    return intersect_face(ray, t_max, hit, face);
+}
+
+bool Box::intersect_face(const Ray& ray, double t_max, Hit& hit, int& face) const {
     int axis = 0, side = 0;
     const double t = solve(ray, t_max, axis, side);
     if (t == kInf) {
@@ -72,6 +77,7 @@ bool Box::intersect(const Ray& ray, double t_max, Hit& hit) const {
     hit.shading_normal = normal;
     hit.uv = {(p[a] - min_[a]) / (max_[a] - min_[a]), (p[b] - min_[b]) / (max_[b] - min_[b])};
     hit.error = kHitRelativeError * (max_component(abs(p)) + max_abs_corner_);
+    face = side < 0 ? axis : axis + 3;
     return true;
 }
 
