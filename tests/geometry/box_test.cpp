@@ -63,6 +63,97 @@ TEST(Box, HitsFromOutsideAndInsideWithOutwardNormals) {
     EXPECT_FALSE(box.occluded({{-5, 0, 0}, {1, 0, 0}}, 3.5));
 }
 
+// The slab test as it was written first: the two t's of each axis divided out and swapped into order,
+// and a ray along a slab tested apart (inside it: no limit; outside: a miss). The box's t, axis and
+// side must equal it bit for bit.
+double reference_slab_t(const Vec3& lo, const Vec3& hi, const Ray& ray, double t_max, int& axis, int& side) {
+    double t_enter = -kInf, t_exit = kInf;
+    int enter_axis = -1, exit_axis = -1;
+    for (int i = 0; i < 3; ++i) {
+        const double o = ray.origin[i];
+        const double d = ray.direction[i];
+        if (d == 0) {
+            if (o < lo[i] || o > hi[i]) {
+                return kInf;
+            }
+            continue;
+        }
+        double t0 = (lo[i] - o) / d;
+        double t1 = (hi[i] - o) / d;
+        if (t0 > t1) {
+            std::swap(t0, t1);
+        }
+        if (t0 > t_enter) {
+            t_enter = t0;
+            enter_axis = i;
+        }
+        if (t1 < t_exit) {
+            t_exit = t1;
+            exit_axis = i;
+        }
+    }
+    if (t_enter > t_exit) {
+        return kInf;
+    }
+    const bool entering = t_enter > 0;
+    const double t = entering ? t_enter : t_exit;
+    axis = entering ? enter_axis : exit_axis;
+    if (!(t > 0) || t >= t_max || axis < 0) {
+        return kInf;
+    }
+    side = (ray.direction[axis] > 0) == entering ? -1 : 1;
+    return t;
+}
+
+TEST(Box, SlabTestGivesTheReferenceHitsBitForBit) {
+    const Box box(kLo, kHi);
+    const Bounds3 around{2 * kLo, 2 * kHi};
+    int hits = 0, along_planes = 0, hits_along_planes = 0;
+    for (std::uint32_t i = 0; i < 200000; ++i) {
+        Ray ray{testing::random_point_in(around, 7, i), testing::random_direction(7, i)};
+        // Every other ray runs along one or two slabs (direction ±0 there), a quarter of those starting
+        // on a slab's plane, some on a face, some on an edge; some rays start on a face across its slab.
+        const auto pick = [&](std::uint32_t dimension) {
+            return static_cast<int>(testing::uniform(7, i, dimension) * 3);
+        };
+        if (i % 2 == 1) {
+            const int a = pick(5);
+            ray.direction[a] = i % 4 == 1 ? 0.0 : -0.0;
+            if (i % 8 == 3) {
+                ray.direction[(a + 1) % 3] = 0.0;
+            }
+            if (i % 16 < 4) {
+                ray.origin[a] = i % 32 < 16 ? kLo[a] : kHi[a];
+                if (i % 64 < 8) {
+                    ray.origin[(a + 2) % 3] = kHi[(a + 2) % 3];
+                }
+                ++along_planes;
+            }
+        } else if (i % 16 == 2) {
+            const int a = pick(5);
+            ray.origin[a] = i % 32 < 16 ? kLo[a] : kHi[a];
+        }
+        const double t_max = i % 3 == 0 ? kInf : 4 * testing::uniform(7, i, 6);
+        int axis = -1, side = 0;
+        const double t = reference_slab_t(kLo, kHi, ray, t_max, axis, side);
+        Hit hit;
+        const bool found = box.intersect(ray, t_max, hit);
+        ASSERT_EQ(found, t != kInf) << i;
+        ASSERT_EQ(box.occluded(ray, t_max), found) << i;
+        if (found) {
+            ++hits;
+            hits_along_planes += i % 2 == 1 && i % 16 < 4;
+            Vec3 normal;
+            normal[axis] = side;
+            ASSERT_EQ(hit.t, t) << i;
+            ASSERT_EQ(hit.normal, normal) << i;
+        }
+    }
+    EXPECT_GT(hits, 30000);
+    EXPECT_GT(along_planes, 20000);
+    EXPECT_GT(hits_along_planes, 2000);
+}
+
 TEST(Box, RandomHitsLieOnTheSurfaceWithOutwardNormals) {
     const Box box(kLo, kHi);
     check_random_hits(

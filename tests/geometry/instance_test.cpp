@@ -95,6 +95,87 @@ TEST(Instance, RotatedBox) {
         });
 }
 
+// A box that is not a Box to Instance, which so takes its general path: optionally with its shading
+// normal tilted off the geometric one.
+class DisguisedBox final : public Shape {
+  public:
+    DisguisedBox(const Vec3& lo, const Vec3& hi, bool tilt_shading)
+        : box_(lo, hi), tilt_shading_(tilt_shading) {}
+    Bounds3 bounds() const override { return box_.bounds(); }
+    bool intersect(const Ray& ray, double t_max, Hit& hit) const override {
+        if (!box_.intersect(ray, t_max, hit)) {
+            return false;
+        }
+        if (tilt_shading_) {
+            hit.shading_normal = normalize(hit.normal + Vec3{0.25, -0.5, 0.125});
+        }
+        return true;
+    }
+    bool occluded(const Ray& ray, double t_max) const override { return box_.occluded(ray, t_max); }
+
+  private:
+    Box box_;
+    bool tilt_shading_;
+};
+
+TEST(Instance, BoxesTakeTheirOwnPathToTheSameHitsBitForBit) {
+    const Vec3 lo{-1, -2, 0.5}, hi{2, 1, 3};
+    Transform::Matrix shear{{{1.5, 0.25, -0.5, 3}, {0.125, 2, 0.75, -1}, {-0.25, 0.5, 0.8, 2}}};
+    const Transform transforms[] = {
+        Transform::rotate({0, 1, 0}, 15).then(Transform::translate({265, 0, 295})),
+        Transform::scale({2, 2, 2})
+            ->then(Transform::rotate({1, 2, 3}, -70))
+            .then(Transform::translate({1, 2, 3})),
+        *Transform::from_matrix(shear)};
+    for (const Transform& to_world : transforms) {
+        const Instance fast(std::make_unique<Box>(lo, hi), to_world);
+        const Instance general(std::make_unique<DisguisedBox>(lo, hi, false), to_world);
+        Bounds3 around = fast.bounds();
+        around = {around.lo - around.extent(), around.hi + around.extent()};
+        int hits = 0;
+        for (std::uint32_t i = 0; i < 20000; ++i) {
+            // From around the box or from inside it, towards anywhere.
+            const Vec3 origin = i % 4 == 0 ? to_world.point(testing::random_point_in({lo, hi}, 3, i))
+                                           : testing::random_point_in(around, 3, i);
+            const Ray ray{origin, testing::random_direction(3, i) * (0.5 + testing::uniform(3, i, 5))};
+            const double t_max = i % 2 == 0 ? kInf : 10 * testing::uniform(3, i, 6);
+            // Records that held another hit: what a miss leaves, and what a hit overwrites.
+            Hit a, b;
+            a.t = b.t = 1e300;
+            a.primitive = b.primitive = 7;
+            a.element = b.element = 9;
+            const bool found = fast.intersect(ray, t_max, a);
+            ASSERT_EQ(general.intersect(ray, t_max, b), found) << i;
+            ASSERT_EQ(fast.occluded(ray, t_max), found) << i;
+            hits += found;
+            ASSERT_EQ(a.t, b.t) << i;
+            ASSERT_EQ(a.point, b.point) << i;
+            ASSERT_EQ(a.normal, b.normal) << i;
+            ASSERT_EQ(a.shading_normal, b.shading_normal) << i;
+            ASSERT_EQ(a.uv, b.uv) << i;
+            ASSERT_EQ(a.error, b.error) << i;
+            ASSERT_EQ(a.primitive, b.primitive) << i;
+            ASSERT_EQ(a.element, b.element) << i;
+        }
+        EXPECT_GT(hits, 5000);
+    }
+}
+
+TEST(Instance, ShadingNormalsOffTheGeometricOnesTurnOnTheirOwn) {
+    const Transform to_world =
+        *Transform::from_matrix({{{1.5, 0.25, -0.5, 3}, {0.125, 2, 0.75, -1}, {-0.25, 0.5, 0.8, 2}}});
+    const DisguisedBox tilted(Vec3{-1, -1, -1}, Vec3{1, 1, 1}, true);
+    const Instance instance(std::make_unique<DisguisedBox>(Vec3{-1, -1, -1}, Vec3{1, 1, 1}, true), to_world);
+    const Ray local{{0.25, 0.5, -5}, {0, 0, 1}};
+    Hit in_space, in_world;
+    ASSERT_TRUE(tilted.intersect(local, kInf, in_space));
+    ASSERT_TRUE(
+        instance.intersect({to_world.point(local.origin), to_world.vector(local.direction)}, kInf, in_world));
+    EXPECT_EQ(in_world.normal, normalize(to_world.normal(in_space.normal)));
+    EXPECT_EQ(in_world.shading_normal, normalize(to_world.normal(in_space.shading_normal)));
+    EXPECT_NE(in_world.shading_normal, in_world.normal);
+}
+
 TEST(Instance, AreaAndSamplesOnlyForSimilarities) {
     const Transform similar = Transform::scale({3, 3, 3})->then(Transform::rotate({1, 0, 0}, 90));
     const Instance disk(std::make_unique<Disk>(Vec3{}, Vec3{0, 1, 0}, 1), similar);

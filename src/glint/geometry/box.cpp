@@ -18,23 +18,21 @@ double Box::solve(const Ray& ray, double t_max, int& axis, int& side) const {
     for (int i = 0; i < 3; ++i) {
         const double o = ray.origin[i];
         const double d = ray.direction[i];
-        if (d == 0) {
-            if (o < min_[i] || o > max_[i]) {
-                return kInf;  // parallel to the slab and outside it
-            }
-            continue;  // parallel and inside: no limit (avoids 0 · ∞ = NaN)
-        }
-        double t0 = (min_[i] - o) / d;
-        double t1 = (max_[i] - o) / d;
-        if (t0 > t1) {
-            std::swap(t0, t1);
-        }
-        if (t0 > t_enter) {
-            t_enter = t0;
+        // The near and far planes picked by the direction's sign, not by comparing the two t's: the
+        // same doubles (a division by d < 0 reverses their order), and the divisions need not wait for
+        // the comparison. Along a slab's planes (d = ±0) the t's are ±∞, which end the ray outside the
+        // slab and limit nothing inside it, or 0/0 = NaN on a plane itself, which compares false below
+        // and so limits nothing either. (Picking the planes by an index instead of the sign's branch
+        // was 5 % slower on book 2's Cornell box: the loads then wait for the direction.)
+        const bool negative = std::signbit(d);
+        const double t_near = ((negative ? max_[i] : min_[i]) - o) / d;
+        const double t_far = ((negative ? min_[i] : max_[i]) - o) / d;
+        if (t_near > t_enter) {
+            t_enter = t_near;
             enter_axis = i;
         }
-        if (t1 < t_exit) {
-            t_exit = t1;
+        if (t_far < t_exit) {
+            t_exit = t_far;
             exit_axis = i;
         }
     }
@@ -42,6 +40,7 @@ double Box::solve(const Ray& ray, double t_max, int& axis, int& side) const {
         return kInf;
     }
     // From outside the first hit is where the ray enters; from inside (t_enter ≤ 0) where it leaves.
+    // (A ray outside a slab it runs along has t_enter = +∞ or t_exit = −∞: no t below passes.)
     const bool entering = t_enter > 0;
     const double t = entering ? t_enter : t_exit;
     axis = entering ? enter_axis : exit_axis;
@@ -54,6 +53,11 @@ double Box::solve(const Ray& ray, double t_max, int& axis, int& side) const {
 }
 
 bool Box::intersect(const Ray& ray, double t_max, Hit& hit) const {
+    int face = 0;
+    return intersect_face(ray, t_max, hit, face);
+}
+
+bool Box::intersect_face(const Ray& ray, double t_max, Hit& hit, int& face) const {
     int axis = 0, side = 0;
     const double t = solve(ray, t_max, axis, side);
     if (t == kInf) {
@@ -72,8 +76,8 @@ bool Box::intersect(const Ray& ray, double t_max, Hit& hit) const {
     hit.normal = normal;
     hit.shading_normal = normal;
     hit.uv = {(p[a] - min_[a]) / (max_[a] - min_[a]), (p[b] - min_[b]) / (max_[b] - min_[b])};
-    hit.error = kHitRelativeError *
-                (max_component(abs(p)) + std::max(max_component(abs(min_)), max_component(abs(max_))));
+    hit.error = kHitRelativeError * (max_component(abs(p)) + max_abs_corner_);
+    face = side < 0 ? axis : axis + 3;
     return true;
 }
 

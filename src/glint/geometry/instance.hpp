@@ -1,6 +1,9 @@
 #pragma once
 
+#include <array>
+
 #include "glint/core/transform.hpp"
+#include "glint/geometry/box.hpp"
 #include "glint/geometry/shape.hpp"
 
 namespace glint {
@@ -39,6 +42,9 @@ class Instance final : public Shape {
         return {to_world_.inverse_point(ray.origin), to_world_.inverse_vector(ray.direction)};
     }
 
+    // The world-space error bound of a hit at world_point, from its error and point in the shape's space.
+    double world_error(double local_error, const Vec3& local_point, const Vec3& world_point) const;
+
     // Whether sample_seen_from() samples this instance by area in world space (see there).
     bool samples_world_area() const { return uniform_scale_ && shape_->samples_by_area(); }
     // The solid-angle density in world space per density in the shape's space, for the world direction
@@ -49,6 +55,13 @@ class Instance final : public Shape {
     Transform to_world_;
     std::optional<double> uniform_scale_;  // to_world_.uniform_scale()
     double abs_determinant_;               // |det M| of the linear part
+    // Per transform, not per hit: the largest row sum of |M| and the largest |translation|.
+    double max_row_abs_sum_;
+    double max_abs_translation_;
+    // When the shape is a Box (rotated boxes are common): the box, called directly, and the world normal
+    // of each of its faces (numbered as Box::intersect_face does), as intersect() would compute it.
+    const Box* box_;
+    std::array<Vec3, 6> box_normals_{};
 };
 
 // The object's `transform` key, if present, wraps its shape in an Instance (else the shape is returned
