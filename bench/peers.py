@@ -564,7 +564,13 @@ def main():
     parser.add_argument('--runs', type=int, help='alternating runs at equal spp (default: 3 fast, 5 full)')
     parser.add_argument('--only', nargs='*', choices=['smallpt', 'rtiow', 'cornell', 'overhead'],
                         help='measure only these (default: all)')
+    parser.add_argument('--glint', help='the glint binary to measure (default: build/release/glint), e.g. '
+                        'an older build for a before/after comparison on the same peers and references')
+    parser.add_argument('--out', help='where images and results.json go (default: build/bench-peers)')
     args = parser.parse_args()
+    global GLINT, OUT
+    GLINT = os.path.abspath(args.glint) if args.glint else GLINT
+    OUT = os.path.abspath(args.out) if args.out else OUT
     mode = MODES[args.mode]
     runs = args.runs or mode['runs']
     only = set(args.only or ['smallpt', 'rtiow', 'cornell', 'overhead'])
