@@ -32,6 +32,12 @@ std::unique_ptr<Integrator> PathIntegrator::prepared(const World& world, const C
     return copy;
 }
 
+std::optional<LightSample> PathIntegrator::light_sample_of(const World& world, std::size_t index,
+                                                           const Hit& at, Point2 u) const {
+    const Light& light = *world.lights[index];
+    return visibility_ ? visibility_->sample(index, light, at, u) : light.sample(at, u);
+}
+
 double PathIntegrator::light_pdf_of(const World& world, std::size_t index, const Hit& at, const Vec3& wi,
                                     const Hit* on_light) const {
     const Light& light = *world.lights[index];
@@ -91,8 +97,7 @@ Rgb PathIntegrator::radiance(const World& world, const Ray& camera_ray, SampleSt
                 continue;
             }
             const Point2 u = samples.next_2d();
-            const std::optional<LightSample> ls =
-                visibility_ ? visibility_->sample(index, light, at, u) : light.sample(at, u);
+            const std::optional<LightSample> ls = light_sample_of(world, index, at, u);
             if (!ls || ls->radiance.is_black() || ls->pdf <= 0) {
                 continue;
             }

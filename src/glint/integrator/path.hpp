@@ -30,7 +30,9 @@ class PathIntegrator final : public Integrator {
     const LightVisibility* light_visibility() const { return visibility_.get(); }
 
   private:
-    // Light::pdf of world.lights[index], with what was learnt of it.
+    // Light::sample and Light::pdf of world.lights[index], with what was learnt of it.
+    std::optional<LightSample> light_sample_of(const World& world, std::size_t index, const Hit& at,
+                                               Point2 u) const;
     double light_pdf_of(const World& world, std::size_t index, const Hit& at, const Vec3& wi,
                         const Hit* on_light) const;
 
