@@ -575,6 +575,65 @@ TEST(Bvh, RectanglesFourAtATimeGiveTheOneAtATimeBits) {
     EXPECT_GT(other_hits, 5000);
 }
 
+// The flat list skips a shape tested by a virtual call (an instanced box, a mesh) when the ray misses
+// its box; that may only save time. Against the brute-force list, which tests every shape: the same
+// hit, bit for bit, and the same occlusion, for rays aimed at the corners and edges of rotated boxes,
+// along their faces' planes, from points on their faces and from inside them.
+TEST(Bvh, TheFlatListsBoxTestsNeverLoseAHit) {
+    const Transform tall_place = Transform::rotate({0, 1, 0}, 15).then(Transform::translate({265, 0, 295}));
+    const Transform short_place = Transform::rotate({0, 1, 0}, -18).then(Transform::translate({130, 0, 65}));
+    const Vec3 tall_size{165, 330, 165}, short_size{165, 165, 165};
+    std::vector<std::unique_ptr<Shape>> shapes;
+    shapes.push_back(std::make_unique<Rectangle>(Vec3{0, 0, 0}, Vec3{555, 0, 0}, Vec3{0, 0, 555}));
+    shapes.push_back(std::make_unique<Instance>(std::make_unique<Box>(Vec3{}, tall_size), tall_place));
+    shapes.push_back(std::make_unique<Instance>(std::make_unique<Box>(Vec3{}, short_size), short_place));
+    shapes.push_back(std::make_unique<Mesh>(test::tessellated_sphere(2, 40.0, {400, 450, 150})));
+    shapes.push_back(std::make_unique<Box>(Vec3{50, 400, 400}, Vec3{150, 500, 500}));  // axis-aligned
+    const auto ptrs = pointers(shapes);
+    const LinearAccelerator list(ptrs);
+    const BvhAccelerator flat(ptrs);
+    ASSERT_EQ(flat.flat_count(), ptrs.size());
+
+    // Points of the boxes' surfaces (corners, edges, faces) and inside them, in world space.
+    std::mt19937_64 rng(91);
+    std::uniform_real_distribution<double> unit(0, 1);
+    const auto box_point = [&](const Transform& place, const Vec3& size, int kind) {
+        Vec3 local{unit(rng) * size.x, unit(rng) * size.y, unit(rng) * size.z};
+        const int fixed = kind == 0 ? 3 : kind == 1 ? 2 : kind == 2 ? 1 : 0;  // corner, edge, face, inside
+        for (int axis = 0; axis < fixed; ++axis) {
+            local[axis] = rng() % 2 == 0 ? 0.0 : size[axis];
+        }
+        return place.point(local);
+    };
+    int hits = 0;
+    for (int r = 0; r < 40000; ++r) {
+        const bool tall = r % 2 == 0;
+        const Vec3 target = box_point(tall ? tall_place : short_place, tall ? tall_size : short_size, r % 4);
+        Vec3 origin = random_in_box(rng, {-100, -100, -100}, {650, 650, 650});
+        Vec3 direction = normalize(target - origin);
+        if (r % 5 == 1) {  // from the target itself, on or in a box, outwards in any direction
+            origin = target;
+            direction = random_direction(rng);
+        } else if (r % 5 ==
+                   2) {  // along an axis through the target: parallel to the axis-aligned box's faces
+            direction = Vec3{};
+            direction[static_cast<int>(rng() % 3)] = rng() % 2 == 0 ? 1.0 : -1.0;
+            origin = target - 300 * direction;
+        }
+        const Ray ray{origin, direction};
+        const double t_max = r % 7 == 0 ? 400 * unit(rng) : kInf;
+        Hit a, b;
+        const bool found = list.intersect(ray, t_max, a);
+        ASSERT_EQ(flat.intersect(ray, t_max, b), found) << r;
+        EXPECT_EQ(flat.occluded(ray, t_max), list.occluded(ray, t_max)) << r;
+        if (found) {
+            ++hits;
+            expect_identical_hits(a, b, dynamic_cast<const Mesh*>(ptrs[a.primitive]) != nullptr);
+        }
+    }
+    EXPECT_GT(hits, 20000);
+}
+
 TEST(Bvh, ScalarTraversalGivesTheSameHitsAsAvx2) {
     auto shapes = test::random_spheres(500, 8);
     shapes.push_back(std::make_unique<Mesh>(test::tessellated_sphere(4, 3.0, {1, 2, 3})));
