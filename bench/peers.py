@@ -496,6 +496,19 @@ def kernel_rates(mesh_name, min_time):
     return rates
 
 
+def overhead_result(kernel, whole, render_label):
+    """Prints and returns one scene's shading overhead: the whole-render rate over the kernel's."""
+    # The whole-render mix (primary rays, diffuse bounces, shadow rays) weights the three kinds about
+    # equally: time per ray is the mean of the times, so the rate is the harmonic mean.
+    kernel_mix = 3 / sum(1 / r for r in kernel.values())
+    log(f'  kernel (glint BVH, 2 threads): ' + ', '.join(f'{k} {v:.2f}' for k, v in kernel.items())
+        + f' Mrays/s; harmonic mean {kernel_mix:.2f}')
+    log(f'  glint render ({render_label}): {whole:.2f} Mrays/s')
+    log(f'  whole-render / kernel: {whole / kernel_mix:.2f} (target >= 0.6)')
+    return {'kernel_mrays_per_s': kernel, 'kernel_mix_mrays_per_s': kernel_mix,
+            'whole_render_mrays_per_s': whole, 'ratio': whole / kernel_mix, 'target': 0.6}
+
+
 def shading_overhead(cfg, cornell):
     result = {}
     if not os.path.exists(BUNNY):
@@ -507,9 +520,6 @@ def shading_overhead(cfg, cornell):
     else:
         log('\n== shading overhead: the bunny (bench/accel kernel vs glint render, 2 threads)')
         kernel = kernel_rates('bunny', cfg['min_time'])
-        # The whole-render mix (primary rays, a diffuse bounce, shadow rays) weights the three kinds
-        # about equally: time per ray is the mean of the times, so the rate is the harmonic mean.
-        kernel_mix = 3 / sum(1 / r for r in kernel.values())
         # bench/accel's rays: a camera at centre + (0.3, 0.4, 1) x 1.1 |extent| looking at the centre,
         # 512 x 128 rays over +-0.275 horizontally; diffuse bounces from the primary hits; shadow rays
         # to a point light at centre + (-0.5, 1.5, 0.5) |extent|. glint renders the same view with the
@@ -531,28 +541,18 @@ def shading_overhead(cfg, cornell):
         renders = [run([GLINT, 'render', scene, '--threads', '2', '--seed', str(1 + i), '-o',
                         os.path.join(OUT, 'bunny.pfm')]) for i in range(3)]
         whole = median([glint_rays_per_second(r.err) for r in renders])
-        result['bunny'] = {'kernel_mrays_per_s': kernel, 'kernel_mix_mrays_per_s': kernel_mix,
-                           'whole_render_mrays_per_s': whole, 'ratio': whole / kernel_mix, 'target': 0.6}
-        log(f'  kernel (glint BVH, 2 threads): ' + ', '.join(f'{k} {v:.2f}' for k, v in kernel.items())
-            + f' Mrays/s; harmonic mean {kernel_mix:.2f}')
-        log(f'  glint render (path, max_depth 2, {w}x{h}, {cfg["spp"]} spp, 2 threads): {whole:.2f} Mrays/s')
-        log(f'  whole-render / kernel: {whole / kernel_mix:.2f} (target >= 0.6)')
+        result['bunny'] = overhead_result(kernel, whole,
+                                          f'path, max_depth 2, {w}x{h}, {cfg["spp"]} spp, 2 threads')
     # Cornell: bench/accel's Cornell ray sets are rtiow-cornell.yaml's own camera rays, a cosine bounce
     # from each hit and shadow rays to uniform points of its light; the whole-render rate is glint's
     # on that scene (2 threads, from the pair's runs), which traces the same three kinds. Their mix is
-    # weighted equally, as for the bunny.
+    # weighted equally, as for the bunny (overhead_result).
     if not os.path.exists(ACCEL) or cornell != cornell:  # NaN: the Cornell pair was not run
         result['cornell'] = {'skipped': 'glint_bench_accel not built or the Cornell pair not run'}
         return result
     log('\n== shading overhead: the Cornell box (bench/accel kernel vs glint render, 2 threads)')
-    kernel = kernel_rates('cornell', cfg['min_time'])
-    kernel_mix = 3 / sum(1 / r for r in kernel.values())
-    result['cornell'] = {'kernel_mrays_per_s': kernel, 'kernel_mix_mrays_per_s': kernel_mix,
-                         'whole_render_mrays_per_s': cornell, 'ratio': cornell / kernel_mix, 'target': 0.6}
-    log(f'  kernel (glint BVH, 2 threads): ' + ', '.join(f'{k} {v:.2f}' for k, v in kernel.items())
-        + f' Mrays/s; harmonic mean {kernel_mix:.2f}')
-    log(f'  glint render (rtiow-cornell.yaml, 2 threads): {cornell:.2f} Mrays/s')
-    log(f'  whole-render / kernel: {cornell / kernel_mix:.2f} (target >= 0.6)')
+    result['cornell'] = overhead_result(kernel_rates('cornell', cfg['min_time']), cornell,
+                                        'rtiow-cornell.yaml, 2 threads')
     return result
 
 
