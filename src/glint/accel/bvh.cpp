@@ -58,23 +58,22 @@ namespace {
 // Whether the ray (with reciprocal direction inv) can meet `box` for t in [0, t_max]: the slab test,
 // with the far t's widened by 1 + 2γ₃ for their rounding (pbrt-v4's Bounds3::IntersectP). A slab the
 // ray runs along gives ±∞, or NaN on its plane, which the comparisons leave without effect.
-bool ray_may_meet(const Bounds3& box, const Ray& ray, const Vec3& inv, double t_max) {
+// Without branches (the three axes' answers are combined at the end): a ray's box tests are as
+// unpredictable as its direction.
+inline bool ray_may_meet(const Bounds3& box, const Ray& ray, const Vec3& inv, double t_max) {
     constexpr double kWiden = 1 + 6 * std::numeric_limits<double>::epsilon();
     double t0 = 0, t1 = t_max;
     for (int axis = 0; axis < 3; ++axis) {
-        double near = (box.lo[axis] - ray.origin[axis]) * inv[axis];
-        double far = (box.hi[axis] - ray.origin[axis]) * inv[axis];
-        if (near > far) {
-            std::swap(near, far);
-        }
-        far *= kWiden;
+        const double a = (box.lo[axis] - ray.origin[axis]) * inv[axis];
+        const double b = (box.hi[axis] - ray.origin[axis]) * inv[axis];
+        // Ordered as `if (a > b) swap`: a NaN (0 · ∞, the ray on a slab's plane and along it) stays
+        // where it was and then compares false, so it narrows neither end.
+        const double near = a > b ? b : a;
+        const double far = (a > b ? a : b) * kWiden;
         t0 = near > t0 ? near : t0;
         t1 = far < t1 ? far : t1;
-        if (t0 > t1) {
-            return false;
-        }
     }
-    return true;
+    return t0 <= t1;
 }
 
 // Four at a time pays for the flat list only, and only from three spheres and rectangles. Measured
