@@ -108,11 +108,17 @@ LightVisibility LightVisibility::learn(const World& world, const Camera& camera,
                                        int max_depth) {
     LightVisibility visibility;
     visibility.caps_.resize(world.lights.size());
-    std::vector<std::size_t> candidates;  // indices of the sphere lights
+    // The sphere lights: their index in world.lights and their sphere, found once.
+    struct Candidate {
+        std::size_t index;
+        const Sphere* sphere;
+    };
+    std::vector<Candidate> candidates;
     for (std::size_t i = 0; i < world.lights.size(); ++i) {
         const Light& light = *world.lights[i];
-        if (light.physical() && light.worth_sampling_in_paths() && sphere_of(light) != nullptr) {
-            candidates.push_back(i);
+        const Sphere* sphere = sphere_of(light);
+        if (light.physical() && light.worth_sampling_in_paths() && sphere != nullptr) {
+            candidates.push_back({i, sphere});
         }
     }
     if (candidates.empty() || film.width <= 0 || film.height <= 0) {
@@ -138,9 +144,9 @@ LightVisibility LightVisibility::learn(const World& world, const Camera& camera,
                 const Vec3 wo = normalize(-ray.direction);
                 const Bsdf bsdf = world.material(hit).bsdf(hit);
                 const Hit at = facing(hit, wo);
-                for (std::size_t light_index : candidates) {
+                for (const auto& [light_index, sphere] : candidates) {
                     const Light& light = *world.lights[light_index];
-                    const Vec3 center = sphere_of(light)->center();
+                    const Vec3& center = sphere->center();
                     for (int k = 0; k < kSamplesPerVertex; ++k) {
                         const int dimension = 1 + static_cast<int>(light_index) * kSamplesPerVertex + k;
                         const std::optional<LightSample> ls =
@@ -164,10 +170,9 @@ LightVisibility LightVisibility::learn(const World& world, const Camera& camera,
             }
         }
     }
-    for (std::size_t light_index : candidates) {
-        const Light& light = *world.lights[light_index];
-        visibility.caps_[light_index] =
-            cap_from(static_cast<const AreaLight&>(light), *sphere_of(light), sightings[light_index]);
+    for (const auto& [light_index, sphere] : candidates) {
+        visibility.caps_[light_index] = cap_from(static_cast<const AreaLight&>(*world.lights[light_index]),
+                                                 *sphere, sightings[light_index]);
     }
     return visibility;
 }
