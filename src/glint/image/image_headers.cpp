@@ -1,8 +1,9 @@
 // Header checks for the formats stb_image decodes. Each parser reads only the fields it needs to bound the
 // file: the declared size, and for uncompressed formats the bytes that size takes; for compressed ones
-// the least their coding can spend on it (deflate: 1 bit per 258 bytes; JPEG: 1 bit per 128 pixels; TGA
-// and HDR run-length packets: 128 and 127 pixels). The numbers are those of stb_image 2.27 (Debian's
-// libstb), whose reading of each header the parsers follow and whose stbi_info_from_memory must agree.
+// the least their coding can spend on it (deflate: 1 bit per 258 bytes; TGA and HDR run-length packets:
+// 128 and 127 pixels; JPEG, decoded by libjpeg-turbo, is checked in jpeg.cpp). The numbers are those of
+// stb_image 2.27 (Debian's libstb), whose reading of each header the parsers follow and whose
+// stbi_info_from_memory must agree.
 #include "glint/image/image_headers.hpp"
 
 #include <stb_image.h>
@@ -297,70 +298,6 @@ StbHeader check_tga(const unsigned char* data, std::size_t size, const std::stri
     return header;
 }
 
-// JPEG: walks the marker segments as stb_image will meet them and refuses a Huffman table (DHT) of more
-// than 256 codes. stb_image 2.27 writes such a table's code lengths and symbols past its arrays (stb
-// issue 1289, fixed upstream in 2.28) and then fails an assertion, which Debian's build keeps: the process
-// would abort. Segments are skipped by their length, entropy-coded data up to the first marker that is not
-// a restart; where stb_image resynchronises on stray bytes (before the frame header) the walk looks for the
-// next 0xff, and it does so everywhere, which checks every table stb_image could read and perhaps more.
-void check_jpeg_huffman_tables(const unsigned char* data, std::size_t size, const std::string& name) {
-    // stb_image reads a byte past the end as 0.
-    const auto byte = [&](std::size_t at) -> unsigned { return at < size ? data[at] : 0u; };
-    std::size_t at = 2;  // after the start of image, FF D8
-    while (at + 1 < size) {
-        if (data[at] != 0xff) {
-            ++at;
-            continue;
-        }
-        if (data[at + 1] == 0xff) {  // fill bytes before a marker
-            ++at;
-            continue;
-        }
-        const unsigned marker = data[at + 1];
-        at += 2;
-        if (marker == 0xd9) {  // end of image: stb_image reads no further
-            return;
-        }
-        if (marker == 0x00 || marker == 0x01 || (marker >= 0xd0 && marker <= 0xd7)) {
-            continue;  // no length field
-        }
-        const unsigned length = (byte(at) << 8) | byte(at + 1);
-        if (marker == 0xc4) {  // define Huffman tables: as stbi__process_marker reads them
-            long remaining = static_cast<long>(length) - 2;
-            std::size_t table = at + 2;
-            while (remaining > 0) {
-                const unsigned table_class = byte(table) >> 4, table_id = byte(table) & 15;
-                if (table_class > 1 || table_id > 3) {
-                    break;  // stb_image refuses it
-                }
-                unsigned codes = 0;
-                for (std::size_t i = 1; i <= 16; ++i) {
-                    codes += byte(table + i);
-                }
-                if (codes > 256) {
-                    fail(name, "JPEG Huffman table at byte " + std::to_string(table) + " has " +
-                                   std::to_string(codes) + " codes, more than the 256 a table can have");
-                }
-                table += 17 + codes;
-                remaining -= 17 + static_cast<long>(codes);
-            }
-        }
-        if (length < 2) {
-            return;  // stb_image refuses it
-        }
-        at += length;
-        if (marker == 0xda) {  // start of scan: entropy-coded data up to the next marker but a restart
-            while (at + 1 < size) {
-                const unsigned next = data[at + 1];
-                if (data[at] == 0xff && next != 0x00 && next != 0xff && (next < 0xd0 || next > 0xd7)) {
-                    break;
-                }
-                at += data[at] == 0xff && next != 0xff ? 2 : 1;
-            }
-        }
-    }
-}
-
 // Radiance HDR: text lines ("#?RADIANCE", variables, an empty line, "-Y <height> +X <width>"), then
 // RGBE pixels. Returns the offset of the pixels.
 std::size_t check_hdr_header(const unsigned char* data, std::size_t size, const std::string& name,
@@ -586,9 +523,6 @@ StbHeader check_stb_header(FileFormat format, const unsigned char* data, std::si
             hdr_pixels_at = check_hdr_header(data, size, name, header);
             check_declared_size(name, format_text, header.width, header.height);
             break;
-        case FileFormat::Jpeg:  // stbi_info below reads its size, and the tables before it
-            check_jpeg_huffman_tables(data, size, name);
-            break;
         default:
             fail(name, std::string(format_text) + " is not decoded through stb_image");
     }
@@ -597,18 +531,6 @@ StbHeader check_stb_header(FileFormat format, const unsigned char* data, std::si
         const char* reason = stbi_failure_reason();
         fail(name, std::string("not a readable ") + format_text + " file (" +
                        (reason ? reason : "no reason given") + ")");
-    }
-    if (format == FileFormat::Jpeg) {
-        header.width = info_width;
-        header.height = info_height;
-        header.channels = info_channels;
-        check_declared_size(name, format_text, header.width, header.height);
-        // Every 8 × 8 block of every component costs at least one bit (a Huffman code is 1 to 16 bits;
-        // baseline blocks need two, progressive ones one in the first DC scan). Subsampled components
-        // have fewer blocks, but sampling factors of at most 4 leave the components together at least
-        // half a block for each 64 pixels (4 × 1 and 1 × 4 is the worst): 1 bit per 128 pixels.
-        needed = ceil_div(static_cast<std::uint64_t>(header.width * header.height), 1024);
-        why = "at least 1 bit for every 128 pixels";
     }
     if (info_width != header.width || info_height != header.height) {
         fail(name, std::string(format_text) + " header read two ways: " + std::to_string(header.width) +

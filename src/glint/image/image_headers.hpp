@@ -24,6 +24,9 @@ std::vector<unsigned char> read_image_file(const std::filesystem::path& path);
 // (exr.cpp).
 Image decode_exr(const unsigned char* data, std::size_t size, const std::string& name);
 
+// Decodes a JPEG file through libjpeg-turbo after checking its declared size (jpeg.cpp).
+Image decode_jpeg(const unsigned char* data, std::size_t size, const std::string& name);
+
 enum class FileFormat { Png, Jpeg, Bmp, Tga, Pnm, Hdr, Exr, Pfm, Gif, Psd, Pic, Unknown };
 
 // The format of a file from its first bytes. TGA has no signature: it is what remains when no other

@@ -170,8 +170,9 @@ Image decode_image(const std::vector<unsigned char>& bytes, const std::string& n
             return image_detail::decode_exr(bytes.data(), bytes.size(), name);
         case FileFormat::Pfm:
             return decode_pfm(bytes, name);
-        case FileFormat::Png:
         case FileFormat::Jpeg:
+            return image_detail::decode_jpeg(bytes.data(), bytes.size(), name);
+        case FileFormat::Png:
         case FileFormat::Bmp:
         case FileFormat::Tga:
         case FileFormat::Pnm:
