@@ -4,6 +4,9 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <iostream>
+
+#include "glint/scene/scene_desc.hpp"
 
 // `glint samples`: draw, list and measure sample patterns (samples_command.cpp).
 void add_samples_command(CLI::App& app);
@@ -11,3 +14,12 @@ void add_samples_command(CLI::App& app);
 void add_serve_command(CLI::App& app);
 // `glint info SCENE`: what the scene holds and what its BVH costs (info_command.cpp).
 void add_info_command(CLI::App& app);
+// `glint convert FILE -o scene.yaml`: another tool's scene as a glint YAML file (convert_command.cpp).
+void add_convert_command(CLI::App& app);
+
+// Prints what an importer approximated or left out, one positioned warning each, to stderr.
+inline void print_warnings(const glint::SceneDesc& desc) {
+    for (const glint::SceneWarning& warning : desc.warnings) {
+        std::cerr << warning.to_string() << '\n';
+    }
+}

@@ -9,6 +9,7 @@
 #include "glint/accel/bvh.hpp"
 #include "glint/geometry/instance.hpp"
 #include "glint/geometry/mesh.hpp"
+#include "glint/import/importer.hpp"
 #include "glint/scene/scene.hpp"
 #include "glint/scene/scene_desc.hpp"
 
@@ -25,7 +26,9 @@ std::string megabytes(std::size_t bytes) {
 int run_info(const std::string& scene_path) {
     glint::Scene scene;
     try {
-        scene = glint::build_scene(glint::load_scene_file(scene_path));
+        const glint::SceneDesc desc = glint::load_scene(scene_path);
+        print_warnings(desc);
+        scene = glint::build_scene(desc);
     } catch (const glint::SceneError& e) {
         std::cerr << e.what() << '\n';
         return kExitBadInput;

@@ -24,6 +24,7 @@
 
 #include "commands.hpp"
 #include "glint/image/image_io.hpp"
+#include "glint/import/importer.hpp"
 #include "glint/render/render.hpp"
 #include "glint/scene/scene.hpp"
 #include "glint/scene/scene_desc.hpp"
@@ -113,6 +114,7 @@ struct RenderOptions {
     std::optional<int> threads;     // not a scene key: it does not change the image
     std::vector<std::string> sets;  // --set key.path=value, in order
     bool quiet = false;
+    glint::ImportOptions import;  // for scenes of other tools (glint/import)
 };
 
 int bad_input(const std::string& message) {
@@ -137,8 +139,10 @@ int run_render(const RenderOptions& options) {
     install_stop_handlers();
     glint::Scene scene;
     try {
-        glint::SceneDesc desc =
-            options.scene_path.empty() ? glint::default_scene() : glint::load_scene_file(options.scene_path);
+        glint::SceneDesc desc = options.scene_path.empty()
+                                    ? glint::default_scene()
+                                    : glint::load_scene(options.scene_path, options.import);
+        print_warnings(desc);
         // The flags are short forms of --set: each is an edit of the scene's tree, checked by the
         // builder like the file; the --set edits follow them, in order.
         glint::apply_flags(desc, options.flags);
@@ -205,7 +209,8 @@ static int run(int argc, char** argv) {
     CLI::App* render =
         app.add_subcommand("render", "Render a scene file (or the built-in default scene) to an image");
     render->add_option("scene", options.scene_path,
-                       "Scene file (YAML or JSON); omitted: the built-in default scene");
+                       "Scene file: glint's YAML or JSON, or " + glint::importer_formats() +
+                           " (by extension); omitted: the built-in default scene");
     render->add_option(
         "-o,--output", options.output,
         "Output image: .png (8-bit sRGB), .pfm or .exr (linear float radiance); default: <scene>.png");
@@ -250,6 +255,7 @@ static int run(int argc, char** argv) {
     add_samples_command(app);
     add_serve_command(app);
     add_info_command(app);
+    add_convert_command(app);
 
     try {
         app.parse(argc, argv);

@@ -6,6 +6,7 @@
 #include <thread>
 
 #include "commands.hpp"
+#include "glint/import/importer.hpp"
 #include "glint/serve/preview_server.hpp"
 
 namespace {
@@ -28,7 +29,8 @@ int run_serve(const ServeOptions& options) {
     std::unique_ptr<glint::PreviewServer> server;
     try {
         const glint::SceneDesc desc =
-            options.scene_path.empty() ? glint::default_scene() : glint::load_scene_file(options.scene_path);
+            options.scene_path.empty() ? glint::default_scene() : glint::load_scene(options.scene_path);
+        print_warnings(desc);
         server = std::make_unique<glint::PreviewServer>(
             desc, options.scene_path.empty() ? "default scene" : options.scene_path);
     } catch (const glint::SceneError& e) {

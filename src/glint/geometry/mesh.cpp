@@ -1,4 +1,4 @@
-// Mesh {type: mesh, file: bunny.obj}: a triangle mesh read from an OBJ or PLY file.
+// Mesh {type: mesh, file: bunny.obj}: a triangle mesh read from an OBJ or PLY file, or given inline.
 #include "glint/geometry/mesh.hpp"
 
 #include <tbb/blocked_range.h>
@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <stdexcept>
 
 #include "glint/geometry/triangle.hpp"
@@ -40,6 +41,11 @@ void check_mesh_data(const MeshData& data) {
                                     " triangles, more than the limit of " +
                                     mesh_io::limit_text(limits.max_triangles));
     }
+    if (!data.uvs.empty() && data.uvs.size() != data.positions.size()) {
+        throw std::invalid_argument("the mesh has " + std::to_string(data.uvs.size()) +
+                                    " texture coordinates for " + std::to_string(data.positions.size()) +
+                                    " positions (expected one per position, or none)");
+    }
     if (!data.normals.empty() && data.normals.size() != data.positions.size()) {
         throw std::invalid_argument("the mesh has " + std::to_string(data.normals.size()) + " normals for " +
                                     std::to_string(data.positions.size()) +
@@ -67,6 +73,7 @@ Mesh::Mesh(MeshData data) {
     check_mesh_data(data);
     positions_ = std::move(data.positions);
     normals_ = std::move(data.normals);
+    uvs_ = std::move(data.uvs);
     const auto start = std::chrono::steady_clock::now();
     triangles_.reserve(data.triangles.size());
     for (const auto& tri : data.triangles) {
@@ -166,8 +173,9 @@ Mesh::Mesh(MeshData data) {
 
 std::size_t Mesh::memory_bytes() const {
     return positions_.capacity() * sizeof(Vec3) + normals_.capacity() * sizeof(Vec3) +
-           triangles_.capacity() * sizeof(triangles_[0]) + blocks_.capacity() * sizeof(TriangleBlock) +
-           area_cdf_.capacity() * sizeof(double) + bvh_.memory_bytes();
+           uvs_.capacity() * sizeof(Point2) + triangles_.capacity() * sizeof(triangles_[0]) +
+           blocks_.capacity() * sizeof(TriangleBlock) + area_cdf_.capacity() * sizeof(double) +
+           bvh_.memory_bytes();
 }
 
 void Mesh::fill_hit(std::uint32_t index, const Vec3& p0, const Vec3& p1, const Vec3& p2,
@@ -186,7 +194,13 @@ void Mesh::fill_hit(std::uint32_t index, const Vec3& p0, const Vec3& p1, const V
             hit.shading_normal = dot(unit, hit.normal) < 0 ? -unit : unit;
         }
     }
-    hit.uv = {b1, b2};
+    if (uvs_.empty()) {
+        hit.uv = {b1, b2};
+    } else {
+        const auto& tri = triangles_[index];
+        const Point2 &t0 = uvs_[tri[0]], &t1 = uvs_[tri[1]], &t2 = uvs_[tri[2]];
+        hit.uv = {b0 * t0.x + b1 * t1.x + b2 * t2.x, b0 * t0.y + b1 * t1.y + b2 * t2.y};
+    }
     hit.error = kHitRelativeError *
                 std::max({max_component(abs(p0)), max_component(abs(p1)), max_component(abs(p2))});
     hit.element = index;
@@ -312,13 +326,126 @@ std::optional<ShapeSample> Mesh::sample_area(Point2 u) const {
     return ShapeSample{point, normalize(cross(p1 - p0, p2 - p0)), 1 / area()};
 }
 
+namespace {
+
+// The faces of `data` that an OBJ file puts under `usemtl name` ("" for those before any usemtl).
+void keep_obj_material(MeshData& data, const ObjMaterialUse& use, const std::string& name, Params& params) {
+    std::uint32_t wanted = ObjMaterialUse::kNoMaterial;
+    if (!name.empty()) {
+        std::vector<std::string> names;
+        for (std::uint32_t i = 0; i < use.materials.size(); ++i) {
+            names.push_back(use.materials[i].name);
+            if (use.materials[i].name == name) {
+                wanted = i;
+            }
+        }
+        if (wanted == ObjMaterialUse::kNoMaterial) {
+            params.fail("obj_material", unknown_name_message("OBJ material", name, names, "the file uses"));
+        }
+    }
+    std::vector<std::array<std::uint32_t, 3>> kept;
+    for (std::size_t t = 0; t < data.triangles.size(); ++t) {
+        if (use.triangle_material[t] == wanted) {
+            kept.push_back(data.triangles[t]);
+        }
+    }
+    if (kept.empty()) {
+        params.fail("obj_material",
+                    "the OBJ file has no faces " + (name.empty() ? std::string("before its first usemtl")
+                                                                 : "under usemtl '" + name + "'"));
+    }
+    data.triangles = std::move(kept);
+}
+
+// A flat list of numbers under `key`, `per_item` to an item; at most `max_items` items.
+std::vector<double> flat_numbers(Params& params, const std::string& key, std::size_t per_item,
+                                 std::uint64_t max_items) {
+    const Node* list = params.node(key);
+    if (!list) {
+        return {};
+    }
+    if (!list->is_sequence() || list->items.size() % per_item != 0) {
+        params.fail(key, "expected a flat list of numbers, " + std::to_string(per_item) + " for each item");
+    }
+    if (list->items.size() / per_item > max_items) {
+        params.fail(key, "more than " + mesh_io::limit_text(max_items) + " items");
+    }
+    std::vector<double> numbers;
+    numbers.reserve(list->items.size());
+    for (const Node& item : list->items) {
+        numbers.push_back(node_number(item, params.what() + "." + key));
+    }
+    return numbers;
+}
+
+// {positions: [...], indices: [...], normals: [...], uvs: [...]}: a mesh written in the scene (what the
+// importers make of meshes given inline, as pbrt's trianglemesh).
+MeshData inline_mesh(Params& params) {
+    const MeshLimits limits;
+    MeshData data;
+    const std::vector<double> positions = flat_numbers(params, "positions", 3, limits.max_vertices);
+    const std::vector<double> indices = flat_numbers(params, "indices", 3, limits.max_triangles);
+    const std::vector<double> normals = flat_numbers(params, "normals", 3, limits.max_vertices);
+    const std::vector<double> uvs = flat_numbers(params, "uvs", 2, limits.max_vertices);
+    const std::size_t vertices = positions.size() / 3;
+    for (std::size_t i = 0; i < positions.size(); i += 3) {
+        data.positions.push_back({positions[i], positions[i + 1], positions[i + 2]});
+        if (max_component(abs(data.positions.back())) > kMaxMeshCoordinate) {
+            params.fail("positions", "position " + std::to_string(i / 3) + " is beyond float's range");
+        }
+    }
+    for (std::size_t i = 0; i < indices.size(); i += 3) {
+        std::array<std::uint32_t, 3> triangle{};
+        for (std::size_t k = 0; k < 3; ++k) {
+            const double index = indices[i + k];
+            if (!(index >= 0 && index < static_cast<double>(vertices)) || index != std::floor(index)) {
+                params.fail("indices", "index " + std::to_string(i + k) +
+                                           " is not a whole number from 0 to " + std::to_string(vertices) +
+                                           " - 1 (the number of positions)");
+            }
+            triangle[k] = static_cast<std::uint32_t>(index);
+        }
+        data.triangles.push_back(triangle);
+    }
+    for (std::size_t i = 0; i < normals.size(); i += 3) {
+        data.normals.push_back({normals[i], normals[i + 1], normals[i + 2]});
+    }
+    for (std::size_t i = 0; i < uvs.size(); i += 2) {
+        data.uvs.push_back({uvs[i], uvs[i + 1]});
+    }
+    if (!normals.empty() && data.normals.size() != vertices) {
+        params.fail("normals",
+                    "expected one normal for each of the " + std::to_string(vertices) + " positions");
+    }
+    if (!uvs.empty() && data.uvs.size() != vertices) {
+        params.fail("uvs", "expected one uv for each of the " + std::to_string(vertices) + " positions");
+    }
+    return data;
+}
+
+}  // namespace
+
 std::unique_ptr<Shape> Mesh::create(Params& params, const BuildContext& context) {
-    const std::string file = params.string("file");
-    MeshData data = load_mesh_file(context.resolve(file), params.pos_of("file"));
+    MeshData data;
+    std::string what = "mesh";
+    if (params.has("file") || !params.has("positions")) {
+        const std::string file = params.string("file");
+        what = "mesh '" + file + "'";
+        if (params.has("obj_material")) {
+            const std::string material = params.string("obj_material");
+            ObjMaterialUse use;
+            data = load_obj(context.resolve(file), {}, params.pos_of("file"), &use);
+            keep_obj_material(data, use, material, params);
+        } else {
+            data = load_mesh_file(context.resolve(file), params.pos_of("file"));
+        }
+    } else {
+        data = inline_mesh(params);
+    }
     try {
         return std::make_unique<Mesh>(std::move(data));
     } catch (const std::invalid_argument& e) {
-        params.fail("file", "mesh '" + file + "': " + e.what());
+        params.fail(params.has("file") ? "file" : "positions", what + ": " + e.what());
     }
 }
 

@@ -62,6 +62,7 @@ class Mesh final : public Shape {
 
     std::vector<Vec3> positions_;
     std::vector<Vec3> normals_;  // empty (flat shading) or one unit (or zero: use the face) per position
+    std::vector<Point2> uvs_;    // empty (a hit's uv is its barycentric (b1, b2)) or one per position
     std::vector<std::array<std::uint32_t, 3>> triangles_;
     // The leaves' triangles, four to a block, with their vertices copied in: what the hot loop reads.
     // A BVH leaf of n triangles is ⌈n/4⌉ consecutive blocks starting at its `first`.

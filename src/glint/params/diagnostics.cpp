@@ -41,7 +41,7 @@ std::optional<std::string_view> SourceFile::line(int number) const {
     return std::string_view(text).substr(start, end - start);
 }
 
-std::string format_diagnostic(const SourcePos& pos, const std::string& message) {
+std::string format_diagnostic(const SourcePos& pos, const std::string& message, const std::string& severity) {
     std::ostringstream out;
     if (pos.file) {
         out << pos.file->path << ':';
@@ -50,7 +50,7 @@ std::string format_diagnostic(const SourcePos& pos, const std::string& message) 
         }
         out << ' ';
     }
-    out << "error: " << message;
+    out << severity << ": " << message;
     const std::optional<std::string_view> line =
         pos.file && pos.line > 0 ? pos.file->line(pos.line) : std::optional<std::string_view>();
     if (line) {

@@ -49,7 +49,19 @@ class SceneError : public std::runtime_error {
 };
 
 // The report SceneError carries: position, message, the line and a caret under the column.
-std::string format_diagnostic(const SourcePos& pos, const std::string& message);
+// `severity` is the word after the position: "error" or "warning".
+std::string format_diagnostic(const SourcePos& pos, const std::string& message,
+                              const std::string& severity = "error");
+
+// Something in the input that glint reads but does not render as its author meant: a construct an
+// importer approximates or leaves out. Never an error (the scene still renders), never silent (it is
+// printed as `file:line:col: warning: …` with the line and a caret).
+struct SceneWarning {
+    SourcePos pos;
+    std::string message;
+
+    std::string to_string() const { return format_diagnostic(pos, message, "warning"); }
+};
 
 // The closest of `candidates` to `word` by edit distance, or "" if none is close enough to suggest.
 std::string closest_match(const std::string& word, const std::vector<std::string>& candidates);

@@ -4,7 +4,9 @@
 #include <cstddef>
 #include <filesystem>
 #include <string>
+#include <vector>
 
+#include "glint/params/diagnostics.hpp"
 #include "glint/params/node.hpp"
 
 namespace glint {
@@ -12,6 +14,8 @@ namespace glint {
 struct SceneDesc {
     Node root;                       // the top-level map: render, camera, materials, objects, lights, …
     std::filesystem::path base_dir;  // relative paths inside the scene resolve against this folder
+    // What an importer approximated or left out (import/importer.hpp); glint's own files have none.
+    std::vector<SceneWarning> warnings;
 };
 
 // Limits on a scene's text, checked before it is trusted (docs/scene-format.md, "Limits"):

@@ -16,7 +16,21 @@ namespace glint {
 struct MeshData {
     std::vector<Vec3> positions;
     std::vector<Vec3> normals;  // empty, or one per position (possibly zero or NaN: the mesh fixes them)
+    std::vector<Point2> uvs;    // empty, or one texture coordinate per position (v from the bottom up)
     std::vector<std::array<std::uint32_t, 3>> triangles;  // indices into positions, counter-clockwise
+};
+
+// What an OBJ file says about materials, for the OBJ importer (import/obj_scene.cpp) and for a mesh
+// that takes only the faces of one material (`obj_material`). Read only when asked for.
+struct ObjMaterialUse {
+    struct Named {
+        std::string name;
+        SourcePos pos;  // the statement that names it (the first, for a material used more than once)
+    };
+    static constexpr std::uint32_t kNoMaterial = 0xffffffffu;  // faces before any `usemtl`
+    std::vector<Named> libraries;                              // `mtllib` files, in file order
+    std::vector<Named> materials;                  // `usemtl` names, distinct, in order of first use
+    std::vector<std::uint32_t> triangle_material;  // per triangle: an index into materials, or kNoMaterial
 };
 
 // The largest mesh a file may describe. Every count read from a file is checked against these, and
@@ -44,8 +58,9 @@ inline constexpr double kMaxMeshCoordinate = 3.4028234663852886e38;  // std::num
 MeshData load_mesh_file(const std::filesystem::path& path, const SourcePos& mentioned_at = {},
                         const MeshLimits& limits = {});
 
+// `materials`, when given, receives the file's `mtllib` and `usemtl` statements.
 MeshData load_obj(const std::filesystem::path& path, const MeshLimits& limits = {},
-                  const SourcePos& mentioned_at = {});
+                  const SourcePos& mentioned_at = {}, ObjMaterialUse* materials = nullptr);
 MeshData load_ply(const std::filesystem::path& path, const MeshLimits& limits = {},
                   const SourcePos& mentioned_at = {});
 

@@ -1,7 +1,8 @@
-// Wavefront OBJ: `v x y z [w]`, `vn x y z` and `f` with v, v/vt, v//vn or v/vt/vn corners (1-based;
-// negative indices count back from the latest vertex). Polygons of any size are split into a fan.
-// Texture coordinates, groups, materials and other statements are read past. Corners that share a
-// position but not a normal become separate vertices, so the normals can be interpolated per vertex.
+// Wavefront OBJ: `v x y z [w]`, `vn x y z`, `vt u [v [w]]` and `f` with v, v/vt, v//vn or v/vt/vn
+// corners (1-based; negative indices count back from the latest vertex). Polygons of any size are split
+// into a fan. `mtllib` and `usemtl` are recorded when the caller asks (ObjMaterialUse); groups and other
+// statements are read past. Corners that share a position but not a normal or texture coordinate
+// become separate vertices, so both can be interpolated per vertex.
 //
 // Hostile files: lines are read word by word, never split into a list first (a line of a billion
 // corners costs only the triangles it makes); every count is checked against MeshLimits before it
@@ -11,6 +12,8 @@
 #include <limits>
 #include <unordered_map>
 
+#include "glint/core/hash.hpp"
+
 #include "glint/geometry/mesh_io/mesh_data.hpp"
 
 namespace glint {
@@ -18,8 +21,8 @@ namespace {
 
 class ObjParser {
   public:
-    ObjParser(std::string path, std::string text, const MeshLimits& limits)
-        : path_(std::move(path)), text_(std::move(text)), limits_(limits) {}
+    ObjParser(std::string path, std::string text, const MeshLimits& limits, ObjMaterialUse* materials)
+        : path_(std::move(path)), text_(std::move(text)), limits_(limits), materials_(materials) {}
 
     MeshData parse() {
         std::size_t start = 0;
@@ -38,6 +41,9 @@ class ObjParser {
         }
         if (!any_normal_) {
             mesh_.normals.clear();
+        }
+        if (!any_uv_) {
+            mesh_.uvs.clear();
         }
         return std::move(mesh_);
     }
@@ -71,20 +77,24 @@ class ObjParser {
         std::size_t i_ = 0;
     };
 
-    [[noreturn]] void fail(std::size_t column, const std::string& message) const {
+    SourcePos position(std::size_t column) const {
         // Positions are ints; a file within the size limit could have more lines or longer ones.
         constexpr std::uint64_t kIntMax = std::numeric_limits<int>::max();
-        // Only the offending line is kept for the report: the file may be gigabytes.
+        // Only the line is kept for the report: the file may be gigabytes.
         const std::size_t line_end = std::min(text_.find('\n', line_start_), text_.size());
         const int line = static_cast<int>(std::min<std::uint64_t>(line_number_, kIntMax));
-        const SourcePos pos{
-            SourceFile::excerpt(path_, line,
-                                std::string_view(text_).substr(line_start_, line_end - line_start_)),
-            line, static_cast<int>(std::min<std::uint64_t>(column + 1, kIntMax))};
-        throw SceneError(pos, message);
+        return {SourceFile::excerpt(path_, line,
+                                    std::string_view(text_).substr(line_start_, line_end - line_start_)),
+                line, static_cast<int>(std::min<std::uint64_t>(column + 1, kIntMax))};
+    }
+    SourcePos position(const Token& token) const {
+        return position(static_cast<std::size_t>(token.text.data() - text_.data()) - line_start_);
+    }
+    [[noreturn]] void fail(std::size_t column, const std::string& message) const {
+        throw SceneError(position(column), message);
     }
     [[noreturn]] void fail(const Token& token, const std::string& message) const {
-        fail(static_cast<std::size_t>(token.text.data() - text_.data()) - line_start_, message);
+        throw SceneError(position(token), message);
     }
 
     // Fails at `token` if a list already holding `size` items may not grow by one.
@@ -157,32 +167,75 @@ class ObjParser {
         return static_cast<std::uint32_t>(resolved);
     }
 
+    // A face corner's position, texture coordinate and normal indices (kNone where it has none).
+    struct Corner {
+        std::uint32_t v, vt, vn;
+        bool operator==(const Corner&) const = default;
+    };
+    struct CornerHash {
+        std::size_t operator()(const Corner& c) const {
+            return static_cast<std::size_t>(hash_values(c.v, c.vt, c.vn));
+        }
+    };
+
     // The mesh vertex of a face corner "v", "v/vt", "v//vn" or "v/vt/vn".
     std::uint32_t corner(const Token& token) {
         const std::string_view text = token.text;
         const std::size_t slash1 = text.find('/');
-        const std::uint32_t v = index(text.substr(0, slash1), token, positions_.size(), "vertex", "vertices");
-        std::uint32_t n = kNoNormal;
+        Corner c{index(text.substr(0, slash1), token, positions_.size(), "vertex", "vertices"), kNone, kNone};
         if (slash1 != std::string_view::npos) {
             const std::size_t slash2 = text.find('/', slash1 + 1);
+            const std::string_view vt = text.substr(
+                slash1 + 1, slash2 == std::string_view::npos ? std::string_view::npos : slash2 - slash1 - 1);
+            if (!vt.empty()) {
+                c.vt = index(vt, token, texcoords_.size(), "texture coordinate", "texture coordinates");
+            }
             if (slash2 != std::string_view::npos && slash2 + 1 < text.size()) {
-                n = index(text.substr(slash2 + 1), token, normals_.size(), "normal", "normals");
+                c.vn = index(text.substr(slash2 + 1), token, normals_.size(), "normal", "normals");
             }
         }
-        const std::uint64_t key = (static_cast<std::uint64_t>(v) << 32) | n;
-        const auto found = vertex_of_corner_.find(key);
+        const auto found = vertex_of_corner_.find(c);
         if (found != vertex_of_corner_.end()) {
             return found->second;
         }
         check_room(mesh_.positions.size(), limits_.max_vertices, token,
-                   "vertices (distinct position and normal pairs)");
+                   "vertices (distinct position, texture coordinate and normal triples)");
         const auto vertex = static_cast<std::uint32_t>(mesh_.positions.size());
-        vertex_of_corner_.emplace(key, vertex);
-        mesh_.positions.push_back(positions_[v]);
+        vertex_of_corner_.emplace(c, vertex);
+        mesh_.positions.push_back(positions_[c.v]);
         // A corner without a normal gets NaN: the mesh recomputes it from the geometry.
-        mesh_.normals.push_back(n == kNoNormal ? Vec3{kNaN, kNaN, kNaN} : normals_[n]);
-        any_normal_ = any_normal_ || n != kNoNormal;
+        mesh_.normals.push_back(c.vn == kNone ? Vec3{kNaN, kNaN, kNaN} : normals_[c.vn]);
+        any_normal_ = any_normal_ || c.vn != kNone;
+        // A corner without a texture coordinate gets (0, 0), as other renderers give it.
+        mesh_.uvs.push_back(c.vt == kNone ? Point2{0, 0} : texcoords_[c.vt]);
+        any_uv_ = any_uv_ || c.vt != kNone;
         return vertex;
+    }
+
+    // The rest of the line after the keyword, as one name (`usemtl`, whose names may hold spaces).
+    std::string_view rest_of(std::string_view line, const Token& keyword) const {
+        std::size_t begin = keyword.column + keyword.text.size();
+        while (begin < line.size() && (line[begin] == ' ' || line[begin] == '\t')) {
+            ++begin;
+        }
+        std::size_t end = line.size();
+        while (end > begin && (line[end - 1] == ' ' || line[end - 1] == '\t' || line[end - 1] == '\r')) {
+            --end;
+        }
+        return line.substr(begin, end - begin);
+    }
+
+    void use_material(std::string_view line, const Token& keyword) {
+        const std::string name(rest_of(line, keyword));
+        if (name.empty()) {
+            fail(keyword, "'usemtl' needs a material name");
+        }
+        const auto [found, added] =
+            material_index_.emplace(name, static_cast<std::uint32_t>(materials_->materials.size()));
+        if (added) {
+            materials_->materials.push_back({name, position(keyword)});
+        }
+        current_material_ = found->second;
     }
 
     void parse_line(std::string_view line) {
@@ -198,6 +251,20 @@ class ObjParser {
         if (keyword.text == "v") {
             check_room(positions_.size(), limits_.max_vertices, keyword, "vertex positions");
             positions_.push_back(vec3(words, keyword, kMaxMeshCoordinate, "vertex"));
+        } else if (keyword.text == "vt") {
+            check_room(texcoords_.size(), limits_.max_vertices, keyword, "texture coordinates");
+            Token token;
+            double uv[2] = {0, 0};  // v may be left out (a 1D texture), and w is not used
+            for (int i = 0; i < 2; ++i) {
+                if (!words.next(token)) {
+                    if (i == 0) {
+                        fail(keyword, "'vt' needs at least one number");
+                    }
+                    break;
+                }
+                uv[i] = number(token);
+            }
+            texcoords_.push_back({uv[0], uv[1]});
         } else if (keyword.text == "vn") {
             check_room(normals_.size(), limits_.max_vertices, keyword, "normals");
             // Any finite normal will do: one too long to normalise is recomputed, like a zero one.
@@ -212,6 +279,9 @@ class ObjParser {
                 if (corners >= 2) {
                     check_room(mesh_.triangles.size(), limits_.max_triangles, token, "triangles");
                     mesh_.triangles.push_back({fan[0], fan[1], current});
+                    if (materials_) {
+                        materials_->triangle_material.push_back(current_material_);
+                    }
                 }
                 fan[corners == 0 ? 0 : 1] = current;
                 ++corners;
@@ -219,11 +289,18 @@ class ObjParser {
             if (corners < 3) {
                 fail(keyword, "a face needs at least three corners");
             }
+        } else if (materials_ && keyword.text == "usemtl") {
+            use_material(line, keyword);
+        } else if (materials_ && keyword.text == "mtllib") {
+            Token file;
+            while (words.next(file)) {
+                materials_->libraries.push_back({std::string(file.text), position(file)});
+            }
         }
-        // Anything else (vt, o, g, s, usemtl, mtllib, l, p, …) does not change the surface.
+        // Anything else (o, g, s, l, p, …) does not change the surface.
     }
 
-    static constexpr std::uint32_t kNoNormal = 0xffffffffu;
+    static constexpr std::uint32_t kNone = 0xffffffffu;
     static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
     std::string path_;
@@ -233,16 +310,25 @@ class ObjParser {
     std::size_t line_start_ = 0;
     std::vector<Vec3> positions_;
     std::vector<Vec3> normals_;
-    std::unordered_map<std::uint64_t, std::uint32_t> vertex_of_corner_;
+    std::vector<Point2> texcoords_;
+    std::unordered_map<Corner, std::uint32_t, CornerHash> vertex_of_corner_;
     bool any_normal_ = false;
+    bool any_uv_ = false;
     MeshData mesh_;
+    ObjMaterialUse* materials_ = nullptr;
+    std::unordered_map<std::string, std::uint32_t> material_index_;
+    std::uint32_t current_material_ = ObjMaterialUse::kNoMaterial;
 };
 
 }  // namespace
 
-MeshData load_obj(const std::filesystem::path& path, const MeshLimits& limits,
-                  const SourcePos& mentioned_at) {
-    return ObjParser(path.string(), mesh_io::read_file(path, mentioned_at, limits.max_file_bytes), limits)
+MeshData load_obj(const std::filesystem::path& path, const MeshLimits& limits, const SourcePos& mentioned_at,
+                  ObjMaterialUse* materials) {
+    if (materials) {
+        *materials = {};
+    }
+    return ObjParser(path.string(), mesh_io::read_file(path, mentioned_at, limits.max_file_bytes), limits,
+                     materials)
         .parse();
 }
 

@@ -1,0 +1,73 @@
+// The one extension → importer table. Adding a format: a file here and a line below.
+#include <algorithm>
+#include <cctype>
+
+#include "glint/import/importer.hpp"
+#include "glint/import/obj_scene.hpp"
+#include "glint/scene/scene_writer.hpp"
+
+namespace glint {
+
+std::span<const ImporterEntry> importers() {
+    static const ImporterEntry table[] = {
+        {".obj", "Wavefront OBJ with MTL materials", &import_obj_scene},
+    };
+    return table;
+}
+
+std::string importer_formats() {
+    std::string text;
+    for (const ImporterEntry& entry : importers()) {
+        text += (text.empty() ? "" : ", ") + std::string(entry.format) + " (" + entry.extension + ")";
+    }
+    return text;
+}
+
+SceneDesc load_scene(const std::filesystem::path& path, const ImportOptions& options) {
+    std::string extension = path.extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    for (const ImporterEntry& entry : importers()) {
+        if (extension == entry.extension) {
+            return entry.import(path, options);
+        }
+    }
+    return load_scene_file(path);
+}
+
+namespace {
+
+// Rewrites the relative paths anywhere in the tree: the values of `file` (meshes, image textures) and of
+// `image` when it is a file name (the environment light's map).
+void rebase_file_paths(Node& node, const std::filesystem::path& from, const std::filesystem::path& to) {
+    if (node.is_map()) {
+        for (std::size_t i = 0; i < node.items.size(); ++i) {
+            Node& value = node.items[i];
+            const bool path_key = node.keys[i] == "file" || node.keys[i] == "image";
+            if (path_key && value.is_scalar() && std::filesystem::path(value.scalar).is_relative()) {
+                const std::filesystem::path target =
+                    std::filesystem::absolute(from / value.scalar).lexically_normal();
+                const std::filesystem::path relative =
+                    target.lexically_relative(std::filesystem::absolute(to));
+                value.scalar = (relative.empty() ? target : relative).generic_string();
+            } else {
+                rebase_file_paths(value, from, to);
+            }
+        }
+    } else if (node.is_sequence()) {
+        for (Node& item : node.items) {
+            rebase_file_paths(item, from, to);
+        }
+    }
+}
+
+}  // namespace
+
+std::string scene_yaml_for(const SceneDesc& desc, const std::filesystem::path& output_dir) {
+    Node root = desc.root;
+    rebase_file_paths(root, desc.base_dir.empty() ? "." : desc.base_dir,
+                      output_dir.empty() ? "." : output_dir);
+    return write_scene_yaml(root);
+}
+
+}  // namespace glint
