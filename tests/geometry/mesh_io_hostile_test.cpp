@@ -311,7 +311,7 @@ TEST(ObjHostile, VertexAndFileLimits) {
                  "more than 3 normals", limits);
     // Corners with different normals are different vertices: 4 of them from 3 positions.
     expect_error("corners.obj", kTriangle + "vn 0 0 1\nvn 0 0 -1\nf 1//1 2//1 3//1\nf 1//2 2//1 3//1\n", 7, 3,
-                 "more than 3 vertices (distinct position and normal pairs)", limits);
+                 "more than 3 vertices (distinct position, texture coordinate and normal triples)", limits);
     limits = {};
     limits.max_file_bytes = 16;
     expect_error("file.obj", kTriangle + "f 1 2 3\n", -1, 0, "more than the limit of 16 bytes", limits);
