@@ -410,6 +410,21 @@ def mesh_seeds():
     write("corpus/ply/tristrips.ply", tristrips)
 
 
+MTL_SEEDS = {  # one material library of each kind the OBJ importer maps (docs/importers.md)
+    "matte.mtl": "newmtl clay\nKd 0.5 0.25 0.125\n",
+    "kinds.mtl": "# one material of each kind\nnewmtl shiny\nKd 0.5 0.5 0.5\nKs 0.25 0.25 0.25\nNs 100\n"
+                 "illum 2\nnewmtl lamp\nKe 10 9 8\nnewmtl water\nillum 7\nNi 1.33\nd 0.5\nnewmtl chrome\n"
+                 "Kd 0 0 0\nKs 0.9 0.9 0.9\nillum 3\n",
+    "textured.mtl": "newmtl wood\nKa 0.1 0.1 0.1\nKd 1 1 1\nmap_Kd -s 2 2 1 checker.png\nmap_Bump bump.png\n"
+                    "Tr 0.25\nTf 1 0.5 0.5\nd -halo 0.5\n",
+}
+
+
+def mtl_seeds():
+    for name, text in MTL_SEEDS.items():
+        write("corpus/mtl/" + name, text)
+
+
 # --------------------------------------------------------------------------------------- scene assets
 
 def asset_seeds():
@@ -678,6 +693,11 @@ def dictionaries():
     write_dict("obj.dict", "OBJ statements and number forms (made by fuzz/make_seeds.py).",
                ["v ", "vn ", "vt ", "vp ", "f ", "l ", "p ", "o ", "g ", "s ", "usemtl ", "mtllib ", "#", "\n", "\r\n",
                 "/", "//", "-1", "-2147483648", "4294967296", "1e38", "1e-45", "nan", "inf", "-0", ".5", "1.", "+"])
+    write_dict("mtl.dict", "MTL statements and number forms (made by fuzz/make_seeds.py).",
+               ["newmtl ", "Ka ", "Kd ", "Ks ", "Ke ", "Tf ", "Ns ", "Ni ", "d ", "Tr ", "illum ", "map_Kd ",
+                "map_Ks ", "map_Bump ", "bump ", "-halo ", "-s ", "-o ", "-bm ", "spectral ", "xyz ", "checker.png",
+                "sky.pfm", "tetrahedron.obj", "#", "\n", "\r\n", "0", "1", "2.5", "-1", "1e308", "nan", "inf",
+                "+", "10", "11"])
     write_dict("ply.dict", "PLY header words and types (made by fuzz/make_seeds.py).",
                ["ply\n", "format ", "ascii 1.0\n", "binary_little_endian 1.0\n", "binary_big_endian 1.0\n",
                 "element ", "property ", "list ", "comment ", "obj_info ", "end_header\n", "vertex ", "face ",
@@ -724,6 +744,7 @@ def main():
     hdr_seeds()
     pfm_seeds()
     mesh_seeds()
+    mtl_seeds()
     asset_seeds()
     scene_seeds()
     edit_seeds()

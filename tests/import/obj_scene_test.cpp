@@ -161,6 +161,9 @@ TEST(MtlMapping, EachKindOfMaterialBecomesItsGlintMaterial) {
               "- {type: mirror, reflectance: [0.9, 0.9, 0.9]}\n");
     EXPECT_EQ(one_line(mapped("newmtl wood\nKd 1 1 1\nmap_Kd wood.png\n")),
               "- {type: matte, albedo: {type: image, file: textures/wood.png}}\n");
+    // Phong cannot take a map with a specular colour (kd + ks ≤ 1 everywhere): plastic can.
+    EXPECT_EQ(one_line(mapped("newmtl varnish\nKd 1 1 1\nKs 0.25 0.25 0.25\nmap_Kd wood.png\n")),
+              "- {type: plastic, diffuse: {type: image, file: textures/wood.png}}\n");
 }
 
 TEST(MtlMapping, WhatIsLeftOutIsAWarningAtItsStatement) {

@@ -118,22 +118,24 @@ Node material_from_mtl(const MtlMaterial& mtl, const std::filesystem::path& base
         }
         return tree::map({{"type", tree::text("matte", pos)}, {"albedo", std::move(diffuse)}}, pos);
     }
+    // A texture with a specular colour: Phong needs kd + ks ≤ 1 everywhere on the texture, which a map
+    // cannot promise; plastic (the map under a clear coat) conserves energy for any map.
+    if (mtl.map_kd.given()) {
+        warnings.push_back({mtl.ks.pos, "material '" + mtl.name +
+                                            "': Ks with map_Kd is rendered as plastic, the map under a clear "
+                                            "coat of index 1.5 (Ks and Ns are not used)"});
+        return tree::map({{"type", tree::text("plastic", pos)}, {"diffuse", std::move(diffuse)}}, pos);
+    }
     // Diffuse and glossy: normalised Phong, ks scaled down where kd + ks would exceed 1 (energy).
     Rgb specular = ks;
-    const double total = max_of(kd) + max_of(ks);
-    if (total > 1 && !mtl.map_kd.given()) {
+    if (max_of(kd) + max_of(ks) > 1) {
         const double keep = std::max(0.0, 1 - max_of(kd)) / max_of(ks);
         specular = {ks.r * keep, ks.g * keep, ks.b * keep};
-        warnings.push_back({mtl.ks.pos, "material '" + mtl.name +
-                                            "': Kd + Ks exceeds 1, which reflects more "
-                                            "light than arrives; Ks scaled to " +
-                                            short_number(max_of(specular))});
-    } else if (mtl.map_kd.given() && max_of(ks) > 0) {
         warnings.push_back(
             {mtl.ks.pos, "material '" + mtl.name +
-                             "': Ks with map_Kd; Phong needs kd + ks ≤ 1, so Ks is scaled to 0.2 "
-                             "and the texture taken as it is"});
-        specular = {ks.r * 0.2 / max_of(ks), ks.g * 0.2 / max_of(ks), ks.b * 0.2 / max_of(ks)};
+                             "': Kd + Ks exceeds 1, which reflects more light than arrives; Ks "
+                             "scaled to " +
+                             short_number(max_of(specular))});
     }
     const double exponent = mtl.ns.given() ? std::clamp(mtl.ns.value, 1e-3, 1e6) : 32.0;
     return tree::map({{"type", tree::text("phong", pos)},
