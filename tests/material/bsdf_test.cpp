@@ -13,6 +13,7 @@
 #include "glint/material/mirror.hpp"
 #include "glint/material/phong.hpp"
 #include "glint/material/plastic.hpp"
+#include "glint/material/principled.hpp"
 #include "material/bsdf_checks.hpp"
 
 namespace glint {
@@ -44,6 +45,18 @@ std::vector<BsdfCase> scattering_cases() {
         {"Plastic", [] { return std::make_unique<Plastic>(constant(0.6), 1.5); }},
         {"MetalRough03", [] { return std::make_unique<Metal>(constant(0.9), 0.3); }},
         {"MetalRough07", [] { return std::make_unique<Metal>(constant(0.9), 0.7); }},
+        // Principled (metallic, roughness): the dielectric, the metal and a blend, smooth to rough.
+        {"PrincipledDielectric05",
+         [] { return std::make_unique<Principled>(constant(0.7), constant(0), constant(0.5), 1.5, 1.0); }},
+        {"PrincipledMetal03",
+         [] {
+             return std::make_unique<Principled>(std::make_shared<ConstantTexture>(Rgb(0.9, 0.6, 0.3)),
+                                                 constant(1), constant(0.3), 1.5, 1.0);
+         }},
+        {"PrincipledHalfMetal07",
+         [] { return std::make_unique<Principled>(constant(0.5), constant(0.5), constant(0.7), 1.5, 1.0); }},
+        {"PrincipledDielectric10",
+         [] { return std::make_unique<Principled>(constant(0.3), constant(0), constant(1.0), 2.0, 0.5); }},
     };
 }
 

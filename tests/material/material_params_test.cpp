@@ -89,5 +89,54 @@ TEST(MaterialParams, BadValuesAreErrorsAtTheirLine) {
     EXPECT_EQ(line, 4) << message;
 }
 
+TEST(MaterialParams, PrincipledTakesNumbersAndTexturesForEveryKey) {
+    const Scene scene = build(R"(
+materials:
+  plain: {type: principled}
+  gold: {type: principled, base_color: [1.0, 0.78, 0.34], metallic: 1, roughness: 0.2}
+  tiled:
+    type: principled
+    base_color: {type: checker, scale: 4, even: 0.9, odd: [0.1, 0.2, 0.3]}
+    metallic: {type: checker, scale: 4, even: 0, odd: 1}
+    roughness: {type: noise, scale: 2, color_a: 0.2, color_b: 0.8}
+    ior: 1.45
+    specular: 0.5
+)");
+    ASSERT_EQ(scene.world->materials.size(), 3u);
+    const Hit hit = testing::test_hit();
+    // The defaults: a base of 0.8 under a layer of F₀ = 0.04.
+    EXPECT_NEAR(scene.world->materials[0]->bsdf(hit).ambient_reflectance().g, 0.04 + 0.96 * 0.96 * 0.8,
+                1e-12);
+    EXPECT_NEAR(scene.world->materials[1]->bsdf(hit).ambient_reflectance().b, 0.34, 1e-12);
+}
+
+TEST(MaterialParams, PrincipledBadValuesAreErrorsAtTheirLine) {
+    auto [line, message] = error_of("materials:\n  p:\n    type: principled\n    rougness: 0.3\n");
+    EXPECT_EQ(line, 4) << message;
+    EXPECT_NE(message.find("did you mean 'roughness'"), std::string::npos) << message;
+
+    std::tie(line, message) = error_of("materials:\n  p:\n    type: principled\n    metallic: 1.5\n");
+    EXPECT_EQ(line, 4) << message;
+    EXPECT_NE(message.find("[0, 1]"), std::string::npos) << message;
+
+    std::tie(line, message) = error_of("materials:\n  p:\n    type: principled\n    metallic: -0.1\n");
+    EXPECT_EQ(line, 4) << message;
+
+    std::tie(line, message) =
+        error_of("materials:\n  p:\n    type: principled\n    roughness: {type: checker, odd: 2}\n");
+    EXPECT_EQ(line, 4) << message;
+    EXPECT_NE(message.find("[0, 1]"), std::string::npos) << message;
+
+    std::tie(line, message) =
+        error_of("materials:\n  p:\n    type: principled\n    base_color: [1, 1.2, 1]\n");
+    EXPECT_EQ(line, 4) << message;
+
+    std::tie(line, message) = error_of("materials:\n  p:\n    type: principled\n    ior: 0.8\n");
+    EXPECT_EQ(line, 4) << message;
+
+    std::tie(line, message) = error_of("materials:\n  p:\n    type: principled\n    specular: 2\n");
+    EXPECT_EQ(line, 4) << message;
+}
+
 }  // namespace
 }  // namespace glint

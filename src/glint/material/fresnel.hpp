@@ -45,6 +45,12 @@ inline double schlick(double cos_theta, double r0) {
 inline Rgb schlick(double cos_theta, const Rgb& r0) {
     return {schlick(cos_theta, r0.r), schlick(cos_theta, r0.g), schlick(cos_theta, r0.b)};
 }
+// Schlick's form rising to R₉₀ instead of 1 at grazing incidence: R₀ + (R₉₀ − R₀)(1 − cos θ)⁵ (glTF's
+// fresnel with f90). A lobe of weight w with Schlick's Fresnel of F₀ is schlick(cos θ, w F₀, w).
+inline Rgb schlick(double cos_theta, const Rgb& r0, double r90) {
+    const double grazing = schlick(cos_theta, 0.0);  // (1 − cos θ)⁵
+    return r0 + (Rgb(r90) - r0) * grazing;
+}
 
 // Refraction per the errata to eq. 19–21. `incident` is the unit direction of travel (towards the
 // surface), `normal` a unit normal of the interface, n1 the index on the normal's side and n2 the

@@ -47,12 +47,18 @@ struct BsdfSample {
 
 // What a material's textures give at one hit (Yocto/GL's material_point): the parameters of its BSDF
 // that vary over the surface, looked up once. Each material says which fields it fills; the others stay
-// black. A small fixed struct rather than a variant of per-material lobe types: every Material
+// black (zero). A small fixed struct rather than a variant of per-material lobe types: every Material
 // subclass, the tests' stand-ins included, writes its own lobes with no central list to extend, and the
 // Bsdf stays a plain value (no allocation per hit).
 struct MaterialPoint {
-    Rgb diffuse;   // reflectance of a diffuse part: matte albedo, phong kd, the base of plastic
-    Rgb specular;  // reflectance of a specular or glossy part: phong ks, mirror kr, metal F₀, fuzzy albedo
+    // Reflectance of a diffuse part: matte albedo, phong kd, the base of plastic, principled's
+    // (1 − metallic) · base colour.
+    Rgb diffuse;
+    // Reflectance of a specular or glossy part: phong ks, mirror kr, metal F₀, fuzzy albedo, principled's
+    // metallic · base colour (the metal's share of F₀).
+    Rgb specular;
+    double metallic = 0;  // principled: the share of the metal lobe, in [0, 1]
+    double alpha = 0;     // principled: the GGX width α of the specular lobe (roughness²)
 };
 
 class Material {

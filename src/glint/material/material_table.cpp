@@ -7,6 +7,7 @@
 #include "glint/material/mirror.hpp"
 #include "glint/material/phong.hpp"
 #include "glint/material/plastic.hpp"
+#include "glint/material/principled.hpp"
 
 namespace glint {
 
@@ -21,6 +22,7 @@ const NameTable<MaterialEntry>& material_table() {
         {"dielectric", &Dielectric::create},
         {"emissive", &Emissive::create},
         {"fuzzy-metal", &FuzzyMetal::create},
+        {"principled", &Principled::create},
     };
     return table;
 }
