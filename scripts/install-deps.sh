@@ -8,7 +8,7 @@ packages=(
   python3  # the layer check (scripts/check_layers.py, run by make test)
   python3-numpy  # make bench-peers (bench/peers.py)
   libtbb-dev libyaml-cpp-dev libcli11-dev libfmt-dev
-  libstb-dev libjpeg62-turbo-dev libtinyexr-dev libpng-dev libtinyobjloader-dev libembree-dev
+  libstb-dev libjpeg62-turbo-dev libtinyexr-dev libpng-dev libtinyobjloader-dev libtinygltf-dev libembree-dev
   nlohmann-json3-dev libcpp-httplib-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   clang libclang-rt-14-dev llvm  # make fuzz: clang with libFuzzer and the sanitizers' runtimes, llvm-symbolizer

@@ -54,6 +54,8 @@ void add_convert_command(CLI::App& app) {
         "convert", "Write a scene of another tool (" + glint::importer_formats() + ") as a glint YAML scene");
     convert->add_option("scene", options->scene_path, "The scene file to convert")->required();
     convert->add_option("-o,--output", options->output, "The YAML file to write; default: <scene>.yaml");
+    convert->add_option("--camera", options->import.camera,
+                        "glTF scenes: the camera to look through, by name");
     convert->callback([options] {
         if (const int code = run_convert(*options); code != 0) {
             throw CLI::RuntimeError(code);

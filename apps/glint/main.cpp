@@ -252,6 +252,7 @@ static int run(int argc, char** argv) {
                        "Set any scene key, as the file would: key.path=value (repeatable; e.g. "
                        "--set render.samples=64 --set camera.fov=30 --set objects.0.radius=2)");
     render->add_flag("-q,--quiet", options.quiet, "No progress bar and no summary");
+    render->add_option("--camera", options.import.camera, "glTF scenes: the camera to look through, by name");
     add_samples_command(app);
     add_serve_command(app);
     add_info_command(app);

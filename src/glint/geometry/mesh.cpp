@@ -5,10 +5,13 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
+#include "glint/geometry/mesh_io/gltf_file.hpp"
 #include "glint/geometry/triangle.hpp"
 #include "glint/params/build_context.hpp"
 #include "glint/params/params.hpp"
@@ -423,6 +426,53 @@ MeshData inline_mesh(Params& params) {
     return data;
 }
 
+// The triangles of a glTF mesh: one primitive (`gltf_primitive`) or all of them together.
+MeshData gltf_mesh(Params& params, const std::filesystem::path& path) {
+    const std::shared_ptr<const GltfFile> file = load_gltf_file(path, params.pos_of("file"));
+    const auto index = [&](const char* key) {
+        const std::int64_t value = params.integer(key, 0);
+        if (value < 0 || value > std::numeric_limits<int>::max()) {
+            params.fail(key, std::string(key) + " must be a whole number ≥ 0");
+        }
+        return static_cast<int>(value);
+    };
+    const int mesh = index("gltf_mesh");
+    if (params.has("gltf_primitive")) {
+        return gltf_primitive_mesh(*file, mesh, index("gltf_primitive"), params.pos_of("gltf_primitive"));
+    }
+    MeshData all;
+    for (int primitive = 0; primitive < gltf_primitive_count(*file, mesh, params.pos_of("gltf_mesh"));
+         ++primitive) {
+        MeshData part = gltf_primitive_mesh(*file, mesh, primitive, params.pos_of("gltf_mesh"));
+        const auto offset = static_cast<std::uint32_t>(all.positions.size());
+        // Normals and uvs are kept only when every primitive has them.
+        const bool normals = (primitive == 0 || !all.normals.empty()) && !part.normals.empty();
+        const bool uvs = (primitive == 0 || !all.uvs.empty()) && !part.uvs.empty();
+        all.positions.insert(all.positions.end(), part.positions.begin(), part.positions.end());
+        if (normals) {
+            all.normals.insert(all.normals.end(), part.normals.begin(), part.normals.end());
+        } else {
+            all.normals.clear();
+        }
+        if (uvs) {
+            all.uvs.insert(all.uvs.end(), part.uvs.begin(), part.uvs.end());
+        } else {
+            all.uvs.clear();
+        }
+        for (auto triangle : part.triangles) {
+            all.triangles.push_back({triangle[0] + offset, triangle[1] + offset, triangle[2] + offset});
+        }
+    }
+    return all;
+}
+
+bool is_gltf(const std::string& file) {
+    std::string extension = std::filesystem::path(file).extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return extension == ".gltf" || extension == ".glb";
+}
+
 }  // namespace
 
 std::unique_ptr<Shape> Mesh::create(Params& params, const BuildContext& context) {
@@ -431,7 +481,9 @@ std::unique_ptr<Shape> Mesh::create(Params& params, const BuildContext& context)
     if (params.has("file") || !params.has("positions")) {
         const std::string file = params.string("file");
         what = "mesh '" + file + "'";
-        if (params.has("obj_material")) {
+        if (is_gltf(file)) {
+            data = gltf_mesh(params, context.resolve(file));
+        } else if (params.has("obj_material")) {
             const std::string material = params.string("obj_material");
             ObjMaterialUse use;
             data = load_obj(context.resolve(file), {}, params.pos_of("file"), &use);

@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cctype>
 
+#include "glint/import/gltf_scene.hpp"
 #include "glint/import/importer.hpp"
 #include "glint/import/obj_scene.hpp"
 #include "glint/scene/scene_writer.hpp"
@@ -11,6 +12,8 @@ namespace glint {
 std::span<const ImporterEntry> importers() {
     static const ImporterEntry table[] = {
         {".obj", "Wavefront OBJ with MTL materials", &import_obj_scene},
+        {".gltf", "glTF 2.0", &import_gltf_scene},
+        {".glb", "glTF 2.0 binary", &import_gltf_scene},
     };
     return table;
 }

@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "glint/geometry/instance.hpp"
+#include "glint/geometry/mesh_io/gltf_file.hpp"
 #include "glint/integrator/integrator.hpp"
 #include "glint/light/area.hpp"
 #include "glint/material/matte.hpp"
@@ -157,6 +158,10 @@ View build_view(const SceneDesc& desc) {
 }
 
 std::shared_ptr<const World> build_world(const SceneDesc& desc, WorldCache* cache) {
+    // The glTF file its meshes read is kept while they are built, not while the image renders.
+    struct ForgetGltfFiles {
+        ~ForgetGltfFiles() { forget_gltf_files(); }
+    } forget_gltf_files_after_building;
     Params top(desc.root, "scene");
     BuildContext context{desc.base_dir, {}};
     auto world = std::make_shared<World>();

@@ -1,0 +1,432 @@
+// The glTF importer. Every mesh primitive a node places becomes a glint mesh object that refers back
+// to the file ({type: mesh, file: model.gltf, gltf_mesh: M, gltf_primitive: P}) with the node's world
+// matrix as its transform, so converting a model writes a small YAML next to it rather than copying its
+// geometry into text. Materials become `principled` (glTF's own model), emissive ones `emissive`.
+#include "glint/import/gltf_scene.hpp"
+
+#include <array>
+#include <cmath>
+#include <set>
+
+#include "glint/core/bounds.hpp"
+#include "glint/core/math.hpp"
+#include "glint/geometry/mesh_io/gltf_file.hpp"
+#include "glint/geometry/mesh_io/tinygltf.hpp"
+#include "glint/import/scene_tree.hpp"
+
+namespace glint {
+namespace {
+
+namespace tree = scene_tree;
+
+// A 4 × 4 matrix, row by row: m[4 r + c].
+using Matrix = std::array<double, 16>;
+
+constexpr Matrix kIdentity = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+
+Matrix multiply(const Matrix& a, const Matrix& b) {
+    Matrix m{};
+    for (int r = 0; r < 4; ++r) {
+        for (int c = 0; c < 4; ++c) {
+            for (int k = 0; k < 4; ++k) {
+                m[4 * r + c] += a[4 * r + k] * b[4 * k + c];
+            }
+        }
+    }
+    return m;
+}
+
+// A node's matrix: `matrix` (column-major in glTF) or translation × rotation × scale.
+Matrix local_matrix(const tinygltf::Node& node) {
+    if (node.matrix.size() == 16) {
+        Matrix m{};
+        for (int r = 0; r < 4; ++r) {
+            for (int c = 0; c < 4; ++c) {
+                m[4 * r + c] = node.matrix[static_cast<std::size_t>(4 * c + r)];
+            }
+        }
+        return m;
+    }
+    const double tx = node.translation.size() == 3 ? node.translation[0] : 0;
+    const double ty = node.translation.size() == 3 ? node.translation[1] : 0;
+    const double tz = node.translation.size() == 3 ? node.translation[2] : 0;
+    double x = 0, y = 0, z = 0, w = 1;  // the unit quaternion (x, y, z, w)
+    if (node.rotation.size() == 4) {
+        x = node.rotation[0], y = node.rotation[1], z = node.rotation[2], w = node.rotation[3];
+        const double norm = std::sqrt(x * x + y * y + z * z + w * w);
+        if (norm > 0) {
+            x /= norm, y /= norm, z /= norm, w /= norm;
+        }
+    }
+    const double sx = node.scale.size() == 3 ? node.scale[0] : 1;
+    const double sy = node.scale.size() == 3 ? node.scale[1] : 1;
+    const double sz = node.scale.size() == 3 ? node.scale[2] : 1;
+    return {(1 - 2 * (y * y + z * z)) * sx,
+            2 * (x * y - z * w) * sy,
+            2 * (x * z + y * w) * sz,
+            tx,
+            2 * (x * y + z * w) * sx,
+            (1 - 2 * (x * x + z * z)) * sy,
+            2 * (y * z - x * w) * sz,
+            ty,
+            2 * (x * z - y * w) * sx,
+            2 * (y * z + x * w) * sy,
+            (1 - 2 * (x * x + y * y)) * sz,
+            tz,
+            0,
+            0,
+            0,
+            1};
+}
+
+Vec3 transform_point(const Matrix& m, const Vec3& p) {
+    return {m[0] * p.x + m[1] * p.y + m[2] * p.z + m[3], m[4] * p.x + m[5] * p.y + m[6] * p.z + m[7],
+            m[8] * p.x + m[9] * p.y + m[10] * p.z + m[11]};
+}
+
+Vec3 transform_direction(const Matrix& m, const Vec3& d) {
+    return {m[0] * d.x + m[1] * d.y + m[2] * d.z, m[4] * d.x + m[5] * d.y + m[6] * d.z,
+            m[8] * d.x + m[9] * d.y + m[10] * d.z};
+}
+
+Rgb rgb_of(const std::vector<double>& values, const Rgb& fallback) {
+    return values.size() >= 3 ? Rgb{values[0], values[1], values[2]} : fallback;
+}
+
+class GltfImporter {
+  public:
+    GltfImporter(const std::filesystem::path& path, const ImportOptions& options)
+        : path_(path), options_(options), at_(tree::file_position(path.string())) {
+        file_ = load_gltf_file(path, at_);
+        model_ = file_->model.get();
+    }
+
+    SceneDesc run() {
+        desc_.base_dir = path_.parent_path();
+        for (const std::string& extension : model_->extensionsUsed) {
+            if (extension != "KHR_lights_punctual" && extension != "KHR_materials_emissive_strength") {
+                warn("the extension " + extension + " is not read by glint");
+            }
+        }
+        for (int root : root_nodes()) {
+            visit(root, kIdentity, 0);
+        }
+        std::vector<std::pair<std::string, Node>> root;
+        root.push_back({"render", tree::map({{"integrator", tree::text("path", at_)}}, at_)});
+        root.push_back({"camera", camera_ ? std::move(*camera_) : default_camera()});
+        root.push_back({"objects", tree::list(std::move(objects_), at_)});
+        if (lights_.empty() && !emits_) {
+            warn(
+                "the glTF scene has no light: glint lights it by a white sky (an environment of radiance 1)");
+            lights_.push_back(tree::map(
+                {{"type", tree::text("environment", at_)}, {"radiance", tree::number(1, at_)}}, at_));
+        }
+        if (!lights_.empty()) {
+            root.push_back({"lights", tree::list(std::move(lights_), at_)});
+        }
+        desc_.root = tree::map(std::move(root), at_);
+        return std::move(desc_);
+    }
+
+  private:
+    void warn(const std::string& message) { desc_.warnings.push_back({at_, message}); }
+
+    // The nodes of the default scene (or the first), or, with no scene, every node no other names.
+    std::vector<int> root_nodes() const {
+        if (!model_->scenes.empty()) {
+            const std::size_t scene =
+                model_->defaultScene >= 0 &&
+                        static_cast<std::size_t>(model_->defaultScene) < model_->scenes.size()
+                    ? static_cast<std::size_t>(model_->defaultScene)
+                    : 0;
+            return model_->scenes[scene].nodes;
+        }
+        std::set<int> children;
+        for (const tinygltf::Node& node : model_->nodes) {
+            children.insert(node.children.begin(), node.children.end());
+        }
+        std::vector<int> roots;
+        for (int i = 0; i < static_cast<int>(model_->nodes.size()); ++i) {
+            if (!children.count(i)) {
+                roots.push_back(i);
+            }
+        }
+        return roots;
+    }
+
+    void visit(int index, const Matrix& parent, int depth) {
+        // A node hierarchy is a tree, at most as deep as there are nodes; a cycle is an error.
+        if (index < 0 || static_cast<std::size_t>(index) >= model_->nodes.size()) {
+            throw SceneError(at_, "glTF file '" + path_.string() + "': a scene names node " +
+                                      std::to_string(index) + ", which does not exist");
+        }
+        if (depth > static_cast<int>(model_->nodes.size()) || depth > 1000) {
+            throw SceneError(at_, "glTF file '" + path_.string() +
+                                      "': its nodes form a cycle or nest deeper than " + "1000 levels");
+        }
+        const tinygltf::Node& node = model_->nodes[static_cast<std::size_t>(index)];
+        const Matrix world = multiply(parent, local_matrix(node));
+        if (node.mesh >= 0) {
+            add_mesh(node, world);
+        }
+        if (node.camera >= 0) {
+            add_camera(node, world);
+        }
+        const auto light = node.extensions.find("KHR_lights_punctual");
+        if (light != node.extensions.end() && light->second.Has("light")) {
+            add_light(light->second.Get("light").GetNumberAsInt(), world);
+        }
+        if (node.skin >= 0 && skin_warned_.insert(node.skin).second) {
+            warn("node '" + node.name + "' is skinned: glint renders its mesh in the rest pose");
+        }
+        for (int child : node.children) {
+            visit(child, world, depth + 1);
+        }
+    }
+
+    void add_mesh(const tinygltf::Node& node, const Matrix& world) {
+        if (static_cast<std::size_t>(node.mesh) >= model_->meshes.size()) {
+            throw SceneError(at_, "glTF file '" + path_.string() + "': node '" + node.name + "' names mesh " +
+                                      std::to_string(node.mesh) + ", which does not exist");
+        }
+        const tinygltf::Mesh& mesh = model_->meshes[static_cast<std::size_t>(node.mesh)];
+        for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
+            const tinygltf::Primitive& primitive = mesh.primitives[p];
+            const int mode = primitive.mode < 0 ? TINYGLTF_MODE_TRIANGLES : primitive.mode;
+            if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
+                mode != TINYGLTF_MODE_TRIANGLE_FAN) {
+                warn("mesh '" + mesh.name + "' primitive " + std::to_string(p) +
+                     " is made of points or lines: glint renders surfaces only, so it is left out");
+                continue;
+            }
+            // The bounds, for a camera when the file has none.
+            const MeshData data = gltf_primitive_mesh(*file_, node.mesh, static_cast<int>(p), at_);
+            for (const Vec3& position : data.positions) {
+                bounds_.grow(transform_point(world, position));
+            }
+            std::vector<std::pair<std::string, Node>> object = {
+                {"type", tree::text("mesh", at_)},
+                {"file", tree::text(path_.filename().generic_string(), at_)},
+                {"gltf_mesh", tree::number(node.mesh, at_)},
+                {"gltf_primitive", tree::number(static_cast<double>(p), at_)}};
+            if (world != kIdentity) {
+                object.push_back(
+                    {"transform",
+                     tree::map(
+                         {{"matrix", tree::numbers(std::vector<double>(world.begin(), world.end()), at_)}},
+                         at_)});
+            }
+            if (primitive.material >= 0 &&
+                static_cast<std::size_t>(primitive.material) < model_->materials.size()) {
+                object.push_back({"material", material(primitive.material)});
+            }
+            objects_.push_back(tree::map(std::move(object), at_));
+        }
+    }
+
+    // An image texture for a glTF texture index, or nothing (with a warning) when its image is not a
+    // file beside the model.
+    std::optional<Node> image_texture(int texture, int tex_coord, const std::string& what) {
+        if (texture < 0 || static_cast<std::size_t>(texture) >= model_->textures.size()) {
+            return std::nullopt;
+        }
+        const int source = model_->textures[static_cast<std::size_t>(texture)].source;
+        if (source < 0 || static_cast<std::size_t>(source) >= model_->images.size()) {
+            return std::nullopt;
+        }
+        const std::string& uri = model_->images[static_cast<std::size_t>(source)].uri;
+        if (uri.empty() || uri.rfind("data:", 0) == 0) {
+            warn(what +
+                 ": the image is stored inside the glTF file, which glint does not read yet; the factor "
+                 "alone is used (save the model as glTF with separate images)");
+            return std::nullopt;
+        }
+        if (tex_coord != 0) {
+            warn(what + " uses TEXCOORD_" + std::to_string(tex_coord) + ": glint reads TEXCOORD_0 only");
+        }
+        std::string file;  // URIs escape spaces and other characters as %XX
+        for (std::size_t i = 0; i < uri.size(); ++i) {
+            if (uri[i] == '%' && i + 2 < uri.size() &&
+                std::isxdigit(static_cast<unsigned char>(uri[i + 1])) &&
+                std::isxdigit(static_cast<unsigned char>(uri[i + 2]))) {
+                file += static_cast<char>(std::stoi(uri.substr(i + 1, 2), nullptr, 16));
+                i += 2;
+            } else {
+                file += uri[i];
+            }
+        }
+        return tree::map({{"type", tree::text("image", at_)}, {"file", tree::text(file, at_)}}, at_);
+    }
+
+    Node material(int index) {
+        const tinygltf::Material& m = model_->materials[static_cast<std::size_t>(index)];
+        const std::string what = "material '" + (m.name.empty() ? std::to_string(index) : m.name) + "'";
+        if (!warned_materials_.insert(index).second) {
+            // Warnings once per material; the node is built again for each use.
+        } else {
+            if (m.normalTexture.index >= 0) {
+                warn(what + ": its normal map is not read by glint");
+            }
+            if (m.occlusionTexture.index >= 0) {
+                warn(what + ": its occlusion map is not read by glint (a path tracer computes occlusion)");
+            }
+            if (m.alphaMode != "OPAQUE") {
+                warn(what + ": alphaMode " + m.alphaMode + " is rendered opaque");
+            }
+            if (m.pbrMetallicRoughness.metallicRoughnessTexture.index >= 0) {
+                warn(what + ": its metallic-roughness map is not read by glint (the factors are used)");
+            }
+            for (const auto& [name, value] : m.extensions) {
+                if (name != "KHR_materials_emissive_strength") {
+                    warn(what + ": " + name + " is not read by glint");
+                }
+            }
+        }
+        // Emission: glint's emitters reflect nothing, so an emissive material is an emissive surface.
+        Rgb emission = rgb_of(m.emissiveFactor, {0, 0, 0});
+        const auto strength = m.extensions.find("KHR_materials_emissive_strength");
+        if (strength != m.extensions.end() && strength->second.Has("emissiveStrength")) {
+            const double s = strength->second.Get("emissiveStrength").GetNumberAsDouble();
+            emission = {emission.r * s, emission.g * s, emission.b * s};
+        }
+        if (emission.r > 0 || emission.g > 0 || emission.b > 0) {
+            emits_ = true;
+            if (warned_emitters_.insert(index).second) {
+                warn(what + " emits: glint renders it as an emissive surface, without its base colour");
+            }
+            Node radiance = tree::color(emission, at_);
+            if (auto texture = image_texture(m.emissiveTexture.index, m.emissiveTexture.texCoord,
+                                             what + "'s emissive map")) {
+                if (emission.r != 1 || emission.g != 1 || emission.b != 1) {
+                    // The map times the factor: the emissive material's `scale` is one number.
+                    const double scale = std::max({emission.r, emission.g, emission.b});
+                    return tree::map({{"type", tree::text("emissive", at_)},
+                                      {"radiance", std::move(*texture)},
+                                      {"scale", tree::number(scale, at_)}},
+                                     at_);
+                }
+                radiance = std::move(*texture);
+            }
+            return tree::map({{"type", tree::text("emissive", at_)}, {"radiance", std::move(radiance)}}, at_);
+        }
+        const auto& pbr = m.pbrMetallicRoughness;
+        const Rgb factor = rgb_of(pbr.baseColorFactor, {1, 1, 1});
+        Node base = tree::color(
+            {std::clamp(factor.r, 0.0, 1.0), std::clamp(factor.g, 0.0, 1.0), std::clamp(factor.b, 0.0, 1.0)},
+            at_);
+        if (auto texture = image_texture(pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord,
+                                         what + "'s base colour map")) {
+            if (factor.r != 1 || factor.g != 1 || factor.b != 1) {
+                warn(what +
+                     ": the base colour map is used without its factor (glint does not multiply them)");
+            }
+            base = std::move(*texture);
+        }
+        return tree::map({{"type", tree::text("principled", at_)},
+                          {"base_color", std::move(base)},
+                          {"metallic", tree::number(std::clamp(pbr.metallicFactor, 0.0, 1.0), at_)},
+                          {"roughness", tree::number(std::clamp(pbr.roughnessFactor, 0.0, 1.0), at_)}},
+                         at_);
+    }
+
+    void add_camera(const tinygltf::Node& node, const Matrix& world) {
+        const tinygltf::Camera& camera = model_->cameras.at(static_cast<std::size_t>(node.camera));
+        const bool wanted = options_.camera.empty()
+                                ? !camera_
+                                : (camera.name == options_.camera || node.name == options_.camera);
+        if (!wanted || camera_) {
+            return;
+        }
+        const Vec3 eye = transform_point(world, {0, 0, 0});
+        const Vec3 forward = transform_direction(world, {0, 0, -1});
+        const Vec3 up = transform_direction(world, {0, 1, 0});
+        std::vector<std::pair<std::string, Node>> keys;
+        if (camera.type == "orthographic") {
+            keys = {{"type", tree::text("orthographic", at_)},
+                    {"height", tree::number(2 * camera.orthographic.ymag, at_)}};
+        } else {
+            keys = {{"type", tree::text("pinhole", at_)},
+                    {"fov", tree::number(degrees(camera.perspective.yfov), at_)}};
+        }
+        keys.push_back({"eye", tree::vec3(eye, at_)});
+        keys.push_back({"look_at", tree::vec3(eye + forward, at_)});
+        keys.push_back({"up", tree::vec3(up, at_)});
+        camera_ = tree::map(std::move(keys), at_);
+    }
+
+    Node default_camera() {
+        if (!options_.camera.empty()) {
+            throw SceneError(
+                at_, "glTF file '" + path_.string() + "' has no camera named '" + options_.camera + "'");
+        }
+        warn("the glTF scene has no camera: glint looks at it from +z");
+        const bool empty = bounds_.lo.x > bounds_.hi.x;
+        const Vec3 centre = empty ? Vec3{0, 0, 0} : 0.5 * (bounds_.lo + bounds_.hi);
+        const double radius = empty ? 1 : std::max(0.5 * length(bounds_.hi - bounds_.lo), 1e-6);
+        const double distance = 1.1 * radius / std::sin(radians(20));
+        return tree::map({{"type", tree::text("pinhole", at_)},
+                          {"eye", tree::vec3(centre + Vec3{0, 0, distance}, at_)},
+                          {"look_at", tree::vec3(centre, at_)},
+                          {"fov", tree::number(40, at_)}},
+                         at_);
+    }
+
+    void add_light(int index, const Matrix& world) {
+        if (index < 0 || static_cast<std::size_t>(index) >= model_->lights.size()) {
+            throw SceneError(at_, "glTF file '" + path_.string() + "': a node names light " +
+                                      std::to_string(index) + ", which does not exist");
+        }
+        const tinygltf::Light& light = model_->lights[static_cast<std::size_t>(index)];
+        const Rgb colour = rgb_of(light.color, {1, 1, 1});
+        const Rgb power{colour.r * light.intensity, colour.g * light.intensity, colour.b * light.intensity};
+        const Vec3 position = transform_point(world, {0, 0, 0});
+        const Vec3 direction = transform_direction(world, {0, 0, -1});
+        if (light.range > 0) {
+            warn("light '" + light.name +
+                 "' has a range: glint's lights reach everywhere (the inverse square "
+                 "law alone)");
+        }
+        if (light.type == "directional") {
+            lights_.push_back(tree::map({{"type", tree::text("directional", at_)},
+                                         {"direction", tree::vec3(direction, at_)},
+                                         {"irradiance", tree::color(power, at_)}},
+                                        at_));
+        } else if (light.type == "spot") {
+            const double outer = std::clamp(degrees(light.spot.outerConeAngle), 1e-3, 90.0);
+            const double inner = std::clamp(degrees(light.spot.innerConeAngle), 0.0, outer);
+            lights_.push_back(tree::map({{"type", tree::text("spot", at_)},
+                                         {"position", tree::vec3(position, at_)},
+                                         {"direction", tree::vec3(direction, at_)},
+                                         {"intensity", tree::color(power, at_)},
+                                         {"angle", tree::number(outer, at_)},
+                                         {"falloff_angle", tree::number(inner, at_)}},
+                                        at_));
+        } else {
+            lights_.push_back(tree::map({{"type", tree::text("point", at_)},
+                                         {"position", tree::vec3(position, at_)},
+                                         {"intensity", tree::color(power, at_)}},
+                                        at_));
+        }
+    }
+
+    std::filesystem::path path_;
+    ImportOptions options_;
+    SourcePos at_;
+    std::shared_ptr<const GltfFile> file_;
+    const tinygltf::Model* model_ = nullptr;
+    SceneDesc desc_;
+    std::vector<Node> objects_;
+    std::vector<Node> lights_;
+    std::optional<Node> camera_;
+    Bounds3 bounds_;
+    bool emits_ = false;
+    std::set<int> warned_materials_, warned_emitters_, skin_warned_;
+};
+
+}  // namespace
+
+SceneDesc import_gltf_scene(const std::filesystem::path& path, const ImportOptions& options) {
+    return GltfImporter(path, options).run();
+}
+
+}  // namespace glint
