@@ -4,6 +4,7 @@
 
 #include "glint/import/importer.hpp"
 #include "glint/import/obj_scene.hpp"
+#include "glint/import/pbrt_scene.hpp"
 #include "glint/scene/scene_writer.hpp"
 
 namespace glint {
@@ -11,6 +12,7 @@ namespace glint {
 std::span<const ImporterEntry> importers() {
     static const ImporterEntry table[] = {
         {".obj", "Wavefront OBJ with MTL materials", &import_obj_scene},
+        {".pbrt", "pbrt-v4", &import_pbrt_scene},
     };
     return table;
 }
