@@ -326,5 +326,25 @@ TEST(PbrtScene, TheCliRendersConvertsAndRefusesWithExitCode2) {
         << refused.output;
 }
 
+// The example scene, through the command line: it renders, and its conversion renders the same bits
+// (convert rewrites the PLY's path for the YAML's folder).
+TEST(PbrtScene, TheExampleConvertsToTheSameImage) {
+    test::TempDir dir;
+    const std::string example = std::string(GLINT_SOURCE_DIR) + "/examples/pbrt-cornell.pbrt";
+    const std::string small = " --width 24 --height 24 --spp 2 --quiet -o '";
+    const test::CommandResult direct =
+        test::run_glint("render '" + example + "'" + small + (dir / "a.pfm").string() + "'");
+    ASSERT_EQ(direct.exit_code, 0) << direct.output;
+    const test::CommandResult convert =
+        test::run_glint("convert '" + example + "' -o '" + (dir / "converted.yaml").string() + "'");
+    ASSERT_EQ(convert.exit_code, 0) << convert.output;
+    const test::CommandResult converted = test::run_glint("render '" + (dir / "converted.yaml").string() +
+                                                          "'" + small + (dir / "b.pfm").string() + "'");
+    ASSERT_EQ(converted.exit_code, 0) << converted.output;
+    EXPECT_EQ(test::run_command("cmp '" + (dir / "a.pfm").string() + "' '" + (dir / "b.pfm").string() + "'")
+                  .exit_code,
+              0);
+}
+
 }  // namespace
 }  // namespace glint
