@@ -326,6 +326,29 @@ TEST(PbrtScene, TheCliRendersConvertsAndRefusesWithExitCode2) {
         << refused.output;
 }
 
+// Constructs that multiply what they cost are refused at their statement before they are built.
+TEST(PbrtScene, MultiplyingConstructsAreBounded) {
+    std::string bomb = "WorldBegin\nTexture \"t0\" \"spectrum\" \"constant\" \"rgb value\" [1 0 0]\n";
+    for (int i = 1; i < 40; ++i) {  // each checkerboard holds the previous one twice: 2^39 values
+        bomb += "Texture \"t" + std::to_string(i) + "\" \"spectrum\" \"checkerboard\" \"texture tex1\" \"t" +
+                std::to_string(i - 1) + "\" \"texture tex2\" \"t" + std::to_string(i - 1) + "\"\n";
+    }
+    EXPECT_THROW(import(bomb), SceneError);
+    std::string instances = "WorldBegin\nObjectBegin \"o\"\nShape \"sphere\"\nObjectEnd\n";
+    for (int i = 0; i < 100'000; ++i) {
+        instances += "ObjectInstance \"o\"\n";
+    }
+    EXPECT_THROW(import(instances), SceneError);
+    std::string deep = "WorldBegin\n";
+    for (int i = 0; i < 2000; ++i) {
+        deep += "AttributeBegin\n";
+    }
+    EXPECT_THROW(import(deep), SceneError);
+    EXPECT_THROW(
+        import("WorldBegin\nShape \"loopsubdiv\" \"integer levels\" 1e300 \"point3 P\" [0 0 0 1 0 0 0 1 0]"),
+        SceneError);
+}
+
 // The example scene, through the command line: it renders, and its conversion renders the same bits
 // (convert rewrites the PLY's path for the YAML's folder).
 TEST(PbrtScene, TheExampleConvertsToTheSameImage) {

@@ -12,6 +12,17 @@ namespace {
 namespace tree = scene_tree;
 using pbrt_spectra::ComplexIor;
 
+constexpr std::size_t kMaxTextureValues = 10'000;
+constexpr std::size_t kMaxTextureNesting = 32;
+
+std::size_t nesting(const Node& node) {
+    std::size_t deepest = 0;
+    for (const Node& item : node.items) {
+        deepest = std::max(deepest, nesting(item));
+    }
+    return deepest + 1;
+}
+
 const std::vector<std::string> kSpectrumTypes = {"rgb", "color", "blackbody", "spectrum", "texture"};
 
 Rgb rgb_of(const PbrtParam& param) {
@@ -311,7 +322,10 @@ void define_texture(const Params& params, Textures& textures) {
         params.text("filter", "bilinear");  // glint filters bilinearly; pbrt's default is the same
         params.text("wrap", "repeat");      // glint repeats, pbrt's default
     } else if (type == "checkerboard") {
-        const int dimension = static_cast<int>(params.number("dimension", 2));
+        const double dimension = params.number("dimension", 2);
+        if (dimension != 2 && dimension != 3) {
+            throw SceneError(pos, "a checkerboard's dimension is 2 or 3");
+        }
         std::optional<Node> even = color_param(params, "tex1", SpectrumUse::Albedo, textures);
         std::optional<Node> odd = color_param(params, "tex2", SpectrumUse::Albedo, textures);
         const double uscale = params.number("uscale", 1), vscale = params.number("vscale", 1);
@@ -359,6 +373,13 @@ void define_texture(const Params& params, Textures& textures) {
             param.used = true;
         }
         node = tree::number(0.5, pos);
+    }
+    // A texture made of textures (a checkerboard of checkerboards …) doubles with each level: bounded,
+    // and kept within the nesting glint's scene files allow.
+    if (count_nodes(node) > kMaxTextureValues || nesting(node) > kMaxTextureNesting) {
+        throw SceneError(pos, "texture '" + name + "' nests more than " + std::to_string(kMaxTextureNesting) +
+                                  " levels or takes more than " + std::to_string(kMaxTextureValues) +
+                                  " values");
     }
     params.warn_unread(what);
     textures.spectrum[name] = std::move(node);

@@ -344,6 +344,9 @@ void Importer::statement(PbrtStatement& s) {
                             "' space are taken as sRGB");
         }
     } else if (d == "Option") {
+        if (s.params.size() != 1) {
+            throw SceneError(s.pos, "Option takes one parameter: Option \"type name\" value");
+        }
         warn(s.pos, "the option '" + s.params.front().name + "' is not read by glint");
     } else if (d == "Attribute") {
         warn(s.pos, "glint does not take Attribute's default parameters: they are left out");
@@ -578,15 +581,16 @@ Node Importer::render_node() {
     const SourcePos& at = whole_file_;
     Node render = tree::map({}, at);
     // Film: the resolution; the file name is glint's -o.
-    int width = 1280, height = 720;
+    // Kept as given: glint's builder checks the size (and a huge number must not be cast to int).
+    double width = 1280, height = 720;
     if (film_.statement) {
         Params film(*film_.statement, warnings_);
         const std::string type = film_.type();
         if (type != "rgb" && type != "gbuffer" && type != "spectral") {
             throw SceneError(film.pos(), unknown_name_message("film", type, {"rgb", "gbuffer", "spectral"}));
         }
-        width = static_cast<int>(film.number("xresolution", 1280));
-        height = static_cast<int>(film.number("yresolution", 720));
+        width = film.number("xresolution", 1280);
+        height = film.number("yresolution", 720);
         if (film.has("filename")) {
             film.text("filename", "");
             warn(film.pos(), "the film's 'filename' is not used: glint writes the image `-o` names");
@@ -818,6 +822,11 @@ Node Importer::materials_node(std::vector<Node>& objects) {
     const auto define = [&](const std::string& key, std::optional<Node> material) {
         is_surface[key] = material.has_value();
         if (material) {
+            values_ += pbrt::count_nodes(*material);
+            if (values_ > kMaxSceneValues) {
+                throw SceneError(material->pos, "the scene's materials take it past glint's limit of " +
+                                                    std::to_string(kMaxSceneValues) + " values");
+            }
             tree::set(materials, key, std::move(*material));
         }
     };
