@@ -644,6 +644,49 @@ def edit_seeds():
     write("corpus/scene_edit/empty-edits.json", '{"edits": []}')
 
 
+def pbrt_seeds():
+    """Small pbrt-v4 scenes: every directive family the importer reads, and the files it names are the
+    assets (tetrahedron.ply, checker.png)."""
+    camera = ('LookAt 0 1 -4  0 0 0  0 1 0\nCamera "perspective" "float fov" 45\n'
+              'Film "rgb" "integer xresolution" 8 "integer yresolution" 8 "string filename" "x.exr"\n'
+              'Sampler "halton" "integer pixelsamples" 2\nIntegrator "volpath" "integer maxdepth" 3\n')
+    write("corpus/pbrt/spheres.pbrt", camera +
+          'WorldBegin\nLightSource "infinite" "rgb L" [0.4 0.5 0.6]\n'
+          'AttributeBegin\n  Material "diffuse" "rgb reflectance" [0.8 0.2 0.1]\n  Translate -1 0 0\n'
+          '  Shape "sphere" "float radius" 0.5 "float zmax" 0.2\nAttributeEnd\n'
+          'AttributeBegin\n  Material "dielectric" "spectrum eta" "glass-BK7"\n  Translate 1 0 0\n'
+          '  Shape "sphere" "float radius" 0.5\nAttributeEnd\n')
+    write("corpus/pbrt/materials.pbrt", "Scale -1 1 1\n" + camera +
+          'PixelFilter "triangle" "float xradius" 1\nWorldBegin\n'
+          'Texture "checks" "spectrum" "checkerboard" "float uscale" 4 "float vscale" 4 "rgb tex1" [1 0 0]\n'
+          'Texture "img" "spectrum" "imagemap" "string filename" "checker.png"\n'
+          'Texture "rough" "float" "constant" "float value" 0.1\n'
+          'MakeNamedMaterial "gold" "string type" "conductor" "spectrum eta" "metal-Au-eta" '
+          '"spectrum k" "metal-Au-k" "texture roughness" "rough"\n'
+          'MakeNamedMaterial "coat" "string type" "coateddiffuse" "texture reflectance" "checks"\n'
+          'MakeNamedMaterial "mixed" "string type" "mix" "string materials" ["gold" "coat"] "float amount" 0.3\n'
+          'NamedMaterial "mixed"\nShape "disk" "float radius" 2 "float innerradius" 0.5\n'
+          'Material "diffuse" "texture reflectance" "img"\nShape "cylinder" "float zmin" 0 "float zmax" 1\n'
+          'Material "interface"\nShape "sphere"\n')
+    write("corpus/pbrt/meshes-lights.pbrt", camera +
+          'WorldBegin\nLightSource "spot" "point3 from" [0 3 0] "point3 to" [0 0 0] "blackbody I" 4000\n'
+          'LightSource "distant" "point3 from" [1 1 1] "rgb L" [1 1 1]\n'
+          'LightSource "point" "spectrum I" [400 1 500 2 600 3 700 4]\n'
+          'AttributeBegin\n  AreaLightSource "diffuse" "rgb L" [4 4 4] "bool twosided" true\n'
+          '  ReverseOrientation\n  Translate 0 2 0\n'
+          '  Shape "bilinearmesh" "point3 P" [-1 0 -1 1 0 -1 -1 0 1 1 0 1]\nAttributeEnd\n'
+          'ObjectBegin "tet"\n  Shape "plymesh" "string filename" "tetrahedron.ply"\n'
+          '  Shape "loopsubdiv" "integer levels" 2 "integer indices" [0 1 2 0 3 1 0 2 3 1 3 2] '
+          '"point3 P" [1 1 1 1 -1 -1 -1 1 -1 -1 -1 1]\nObjectEnd\n'
+          'ObjectInstance "tet"\nTransformBegin\n  Translate 2 0 0\n  ObjectInstance "tet"\nTransformEnd\n'
+          'CoordSysTransform "camera"\nShape "trianglemesh" "point3 P" [0 0 1 1 0 1 0 1 1] '
+          '"integer indices" [0 1 2] "normal N" [0 0 -1 0 0 -1 0 0 -1] "point2 uv" [0 0 1 0 0 1]\n')
+    write("corpus/pbrt/orthographic.pbrt",
+          'Transform [1 0 0 0  0 1 0 0  0 0 1 0  0 0 5 1]\n'
+          'Camera "orthographic" "float screenwindow" [-2 2 -2 2]\nWorldBegin\n'
+          'ConcatTransform [1 0 0 0  0 1 0 0  0 0 1 0  0 0 0 1]\nRotate 30 0 1 0\nShape "sphere"\n')
+
+
 # ----------------------------------------------------------------------------------------- dictionaries
 
 def dict_entry(token):
@@ -705,6 +748,20 @@ def dictionaries():
                 "char ", "uchar ", "short ", "ushort ", "int ", "uint ", "float ", "double ", "int8 ", "uint8 ",
                 "int16 ", "uint16 ", "int32 ", "uint32 ", "float32 ", "float64 ", "4294967295", "2147483647",
                 "\xff\xff\xff\xff", "\x00\x00\x80\x7f", "\x00\x00\xc0\x7f"])
+    write_dict("pbrt.dict", "pbrt-v4 directives, parameter types and names (made by fuzz/make_seeds.py).",
+               ["AttributeBegin\n", "AttributeEnd\n", "TransformBegin\n", "TransformEnd\n", "WorldBegin\n",
+                "ObjectBegin ", "ObjectEnd\n", "ObjectInstance ", "Include ", "Import ", "LookAt ", "Translate ",
+                "Scale ", "Rotate ", "Transform ", "ConcatTransform ", "CoordinateSystem ", "CoordSysTransform ",
+                "ActiveTransform ", "ReverseOrientation\n", "Camera ", "Film ", "Sampler ", "Integrator ",
+                "PixelFilter ", "Shape ", "Material ", "MakeNamedMaterial ", "NamedMaterial ", "Texture ",
+                "LightSource ", "AreaLightSource ", "\"integer ", "\"float ", "\"point2 ", "\"point3 ",
+                "\"normal ", "\"rgb ", "\"spectrum ", "\"blackbody ", "\"bool ", "\"string ", "\"texture ",
+                "\"sphere\"", "\"disk\"", "\"cylinder\"", "\"trianglemesh\"", "\"plymesh\"",
+                "\"bilinearmesh\"", "\"loopsubdiv\"", "\"diffuse\"", "\"conductor\"", "\"dielectric\"",
+                "\"coateddiffuse\"", "\"mix\"", "\"interface\"", "\"imagemap\"", "\"checkerboard\"",
+                "\"scale\"", "\"infinite\"", "\"point\"", "\"spot\"", "\"distant\"", "\"perspective\"",
+                "\"orthographic\"", "\"metal-Au-eta\"", "\"glass-BK7\"", "\"tetrahedron.ply\"",
+                "\"checker.png\"", "[", "]", "#", "\\", "true", "false", "1e38", "-0", "nan"])
     write_dict("image_png.dict", "PNG signature and chunk names (made by fuzz/make_seeds.py).",
                ["\x89PNG\r\n\x1a\n", "IHDR", "PLTE", "IDAT", "IEND", "tRNS", "gAMA", "sRGB", "iCCP", "tEXt", "zTXt",
                 "CgBI", "\x00\x00\x00\x0d", "\x7f\xff\xff\xff", "\x08\x02", "\x10\x06", "\x08\x03", "\x78\x9c"])
@@ -748,6 +805,7 @@ def main():
     asset_seeds()
     scene_seeds()
     edit_seeds()
+    pbrt_seeds()
     dictionaries()
     total = 0
     for folder, _, files in os.walk(os.path.join(FUZZ, "corpus")):

@@ -5,6 +5,7 @@
 #include "glint/import/gltf_scene.hpp"
 #include "glint/import/importer.hpp"
 #include "glint/import/obj_scene.hpp"
+#include "glint/import/pbrt_scene.hpp"
 #include "glint/scene/scene_writer.hpp"
 
 namespace glint {
@@ -14,6 +15,7 @@ std::span<const ImporterEntry> importers() {
         {".obj", "Wavefront OBJ with MTL materials", &import_obj_scene},
         {".gltf", "glTF 2.0", &import_gltf_scene},
         {".glb", "glTF 2.0 binary", &import_gltf_scene},
+        {".pbrt", "pbrt-v4", &import_pbrt_scene},
     };
     return table;
 }
