@@ -644,6 +644,56 @@ def edit_seeds():
     write("corpus/scene_edit/empty-edits.json", '{"edits": []}')
 
 
+def gltf_seeds():
+    """Small glTF 2.0 models, text and binary: a square placed by a node hierarchy, a camera, a punctual
+    light, a metallic-roughness material with a texture, an emissive one, a triangle strip."""
+    import base64
+    import json
+    import struct
+    geometry = struct.pack("<12f", 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0) + struct.pack("<6H", 0, 1, 2, 0, 2, 3)
+
+    def model(buffer_uri):
+        m = {
+            "asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0, 2, 3]}],
+            "nodes": [{"translation": [0, 0, -3], "rotation": [0, 0.7071067811865476, 0, 0.7071067811865476],
+                       "children": [1]},
+                      {"mesh": 0, "scale": [2, 2, 2]},
+                      {"camera": 0, "translation": [4, 1, -4], "rotation": [0, 0.7071067811865476, 0,
+                                                                             0.7071067811865476]},
+                      {"translation": [1, 2, 3], "extensions": {"KHR_lights_punctual": {"light": 0}}}],
+            "cameras": [{"name": "side", "type": "perspective", "perspective": {"yfov": 0.5, "znear": 0.1}}],
+            "extensionsUsed": ["KHR_lights_punctual"],
+            "extensions": {"KHR_lights_punctual": {"lights": [{"type": "spot", "color": [1, 0.5, 0.25],
+                                                               "intensity": 8, "spot": {"outerConeAngle": 0.5}}]}},
+            "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1, "material": 0},
+                                       {"attributes": {"POSITION": 0}, "mode": 5, "material": 1}]}],
+            "materials": [{"name": "red", "pbrMetallicRoughness": {"baseColorFactor": [0.8, 0.1, 0.1, 1],
+                                                                   "metallicFactor": 0.25, "roughnessFactor": 0.5,
+                                                                   "baseColorTexture": {"index": 0}}},
+                          {"name": "lamp", "emissiveFactor": [1, 1, 1]}],
+            "textures": [{"source": 0}],
+            "images": [{"uri": "data:image/png;base64," +
+                        base64.b64encode(png(2, 2, 2, 8, lambda x, y: [255 * x, 255 * y, 128])).decode()}],
+            "buffers": [{"byteLength": len(geometry)}],
+            "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 48},
+                            {"buffer": 0, "byteOffset": 48, "byteLength": 12}],
+            "accessors": [{"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3",
+                           "min": [0, 0, 0], "max": [1, 1, 0]},
+                          {"bufferView": 1, "componentType": 5123, "count": 6, "type": "SCALAR"}]}
+        if buffer_uri:
+            m["buffers"][0]["uri"] = buffer_uri
+        return m
+
+    uri = "data:application/octet-stream;base64," + base64.b64encode(geometry).decode()
+    write("corpus/gltf/square.gltf", json.dumps(model(uri)))
+    text = json.dumps(model(None)).encode()
+    text += b" " * (-len(text) % 4)
+    binary = geometry + b"\0" * (-len(geometry) % 4)
+    glb = (b"glTF" + struct.pack("<II", 2, 12 + 8 + len(text) + 8 + len(binary)) +
+           struct.pack("<I", len(text)) + b"JSON" + text + struct.pack("<I", len(binary)) + b"BIN\0" + binary)
+    write("corpus/gltf/square.glb", glb)
+
+
 def pbrt_seeds():
     """Small pbrt-v4 scenes: every directive family the importer reads, and the files it names are the
     assets (tetrahedron.ply, checker.png)."""
@@ -736,6 +786,18 @@ def dictionaries():
     write_dict("obj.dict", "OBJ statements and number forms (made by fuzz/make_seeds.py).",
                ["v ", "vn ", "vt ", "vp ", "f ", "l ", "p ", "o ", "g ", "s ", "usemtl ", "mtllib ", "#", "\n", "\r\n",
                 "/", "//", "-1", "-2147483648", "4294967296", "1e38", "1e-45", "nan", "inf", "-0", ".5", "1.", "+"])
+    write_dict("gltf.dict", "glTF 2.0 keys and values (made by fuzz/make_seeds.py).",
+               ['"asset"', '"version"', '"2.0"', '"scene"', '"scenes"', '"nodes"', '"children"', '"mesh"',
+                '"meshes"', '"primitives"', '"attributes"', '"POSITION"', '"NORMAL"', '"TEXCOORD_0"', '"indices"',
+                '"mode"', '"material"', '"materials"', '"pbrMetallicRoughness"', '"baseColorFactor"',
+                '"baseColorTexture"', '"metallicFactor"', '"roughnessFactor"', '"emissiveFactor"', '"textures"',
+                '"source"', '"images"', '"uri"', '"buffers"', '"byteLength"', '"bufferViews"', '"buffer"',
+                '"byteOffset"', '"byteStride"', '"accessors"', '"bufferView"', '"componentType"', '"count"',
+                '"type"', '"VEC3"', '"VEC2"', '"SCALAR"', '"MAT4"', '"matrix"', '"translation"', '"rotation"',
+                '"scale"', '"camera"', '"cameras"', '"perspective"', '"orthographic"', '"yfov"', '"ymag"',
+                '"KHR_lights_punctual"', '"lights"', '"light"', '"spot"', '"point"', '"directional"',
+                '"intensity"', '"sparse"', '"skin"', "5120", "5121", "5122", "5123", "5125", "5126", "4294967295",
+                "-1", "1e308", "glTF", "JSON", "BIN\x00", "data:application/octet-stream;base64,"])
     write_dict("mtl.dict", "MTL statements and number forms (made by fuzz/make_seeds.py).",
                ["newmtl ", "Ka ", "Kd ", "Ks ", "Ke ", "Tf ", "Ns ", "Ni ", "d ", "Tr ", "illum ", "map_Kd ",
                 "map_Ks ", "map_Bump ", "bump ", "-halo ", "-s ", "-o ", "-bm ", "spectral ", "xyz ", "checker.png",
@@ -802,6 +864,7 @@ def main():
     pfm_seeds()
     mesh_seeds()
     mtl_seeds()
+    gltf_seeds()
     asset_seeds()
     scene_seeds()
     edit_seeds()

@@ -330,7 +330,11 @@ class GltfImporter {
     }
 
     void add_camera(const tinygltf::Node& node, const Matrix& world) {
-        const tinygltf::Camera& camera = model_->cameras.at(static_cast<std::size_t>(node.camera));
+        if (static_cast<std::size_t>(node.camera) >= model_->cameras.size()) {
+            throw SceneError(at_, "glTF file '" + path_.string() + "': node '" + node.name + "' names camera " +
+                                      std::to_string(node.camera) + ", which does not exist");
+        }
+        const tinygltf::Camera& camera = model_->cameras[static_cast<std::size_t>(node.camera)];
         const bool wanted = options_.camera.empty()
                                 ? !camera_
                                 : (camera.name == options_.camera || node.name == options_.camera);
