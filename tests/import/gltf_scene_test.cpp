@@ -10,6 +10,7 @@
 
 #include "glint/geometry/mesh.hpp"
 #include "glint/geometry/mesh_io/gltf_file.hpp"
+#include "glint/image/image_io.hpp"
 #include "glint/import/importer.hpp"
 #include "glint/scene/scene_writer.hpp"
 #include "test_util.hpp"
@@ -205,6 +206,43 @@ TEST(GltfImport, AnAccessorReachingPastItsBufferIsAnError) {
     const auto broken = test::run_glint("render '" + (dir / "broken.gltf").string() + "' -o '" +
                                         (dir / "broken.png").string() + "' -q");
     EXPECT_EQ(broken.exit_code, 2) << broken.output;
+}
+
+TEST(GltfImport, AnImageStoredInTheModelRendersAsTheSameImageInAFile) {
+    // A 2 × 1 PFM (left 0.25, right 0.75) as the base colour map: once as a file beside the model,
+    // once inside it as a data: URI. The two renders must be the same bits.
+    Image texture(2, 1);
+    texture.rgb = {0.25f, 0.25f, 0.25f, 0.75f, 0.75f, 0.75f};
+    const std::vector<unsigned char> pfm = encode_pfm(texture);
+    const std::string pfm_bytes(pfm.begin(), pfm.end());
+    test::TempDir dir;
+    dir.write("texture.pfm", pfm_bytes);
+    json outside = square_model(data_uri());
+    outside["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"] = {{"index", 0}};
+    outside["materials"][0]["pbrMetallicRoughness"]["baseColorFactor"] = {1, 1, 1, 1};
+    outside["images"][0]["uri"] = "texture.pfm";
+    json inside = outside;
+    inside["images"][0]["uri"] = "data:application/octet-stream;base64," + base64(pfm_bytes);
+    dir.write("outside.gltf", outside.dump());
+    dir.write("inside.gltf", inside.dump());
+    const SceneDesc inside_desc = load_scene(dir / "inside.gltf");
+    const Node& base = *inside_desc.root.find("objects")->items.at(0).find("material")->find("base_color");
+    EXPECT_EQ(write_scene_yaml(base), "type: image\n\nfile: inside.gltf\n\ngltf_image: 0\n");
+    RenderFlags flags;
+    flags.width = 16;
+    flags.height = 8;
+    flags.samples_per_pixel = 2;
+    const Film a = test::render_film(build_scene(load_scene(dir / "outside.gltf"), flags));
+    const Film b = test::render_film(build_scene(inside_desc, flags));
+    for (int y = 0; y < 8; ++y) {
+        for (int x = 0; x < 16; ++x) {
+            ASSERT_EQ(a.pixel(x, y).r, b.pixel(x, y).r) << x << ", " << y;
+        }
+    }
+    // A stored image that is not an image is an error at the texture, exit 2 from the CLI.
+    inside["images"][0]["uri"] = "data:application/octet-stream;base64," + base64("not an image");
+    dir.write("broken.gltf", inside.dump());
+    EXPECT_THROW(build_scene(load_scene(dir / "broken.gltf")), SceneError);
 }
 
 TEST(GltfImport, ConvertWritesAYamlThatRendersTheSameBits) {

@@ -235,14 +235,14 @@ class GltfImporter {
             return std::nullopt;
         }
         const std::string& uri = model_->images[static_cast<std::size_t>(source)].uri;
-        if (uri.empty() || uri.rfind("data:", 0) == 0) {
-            warn(what +
-                 ": the image is stored inside the glTF file, which glint does not read yet; the factor "
-                 "alone is used (save the model as glTF with separate images)");
-            return std::nullopt;
-        }
         if (tex_coord != 0) {
             warn(what + " uses TEXCOORD_" + std::to_string(tex_coord) + ": glint reads TEXCOORD_0 only");
+        }
+        if (uri.empty() || uri.rfind("data:", 0) == 0) {  // stored in the model: decoded from it
+            return tree::map({{"type", tree::text("image", at_)},
+                              {"file", tree::text(path_.filename().generic_string(), at_)},
+                              {"gltf_image", tree::number(source, at_)}},
+                             at_);
         }
         std::string file;  // URIs escape spaces and other characters as %XX
         for (std::size_t i = 0; i < uri.size(); ++i) {
@@ -331,8 +331,9 @@ class GltfImporter {
 
     void add_camera(const tinygltf::Node& node, const Matrix& world) {
         if (static_cast<std::size_t>(node.camera) >= model_->cameras.size()) {
-            throw SceneError(at_, "glTF file '" + path_.string() + "': node '" + node.name + "' names camera " +
-                                      std::to_string(node.camera) + ", which does not exist");
+            throw SceneError(at_, "glTF file '" + path_.string() + "': node '" + node.name +
+                                      "' names camera " + std::to_string(node.camera) +
+                                      ", which does not exist");
         }
         const tinygltf::Camera& camera = model_->cameras[static_cast<std::size_t>(node.camera)];
         const bool wanted = options_.camera.empty()

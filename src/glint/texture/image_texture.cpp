@@ -6,8 +6,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <stdexcept>
 
+#include "glint/geometry/mesh_io/gltf_file.hpp"
 #include "glint/image/image_io.hpp"
 #include "glint/params/build_context.hpp"
 #include "glint/params/params.hpp"
@@ -50,7 +52,21 @@ std::shared_ptr<const Texture> ImageTexture::create(Params& params, const BuildC
     const std::filesystem::path path = context.resolve(file);
     Image image;
     try {
-        image = read_image(path);
+        if (params.has("gltf_image")) {
+            // An image stored inside a glTF model: its encoded bytes, decoded by the same reader.
+            const std::int64_t index = params.integer("gltf_image");
+            if (index < 0 || index > std::numeric_limits<int>::max()) {
+                params.fail("gltf_image", "gltf_image must be a whole number ≥ 0");
+            }
+            const auto model = load_gltf_file(path, params.pos_of("file"));
+            image =
+                decode_image(gltf_image_bytes(*model, static_cast<int>(index), params.pos_of("gltf_image")),
+                             path.string() + " image " + std::to_string(index));
+        } else {
+            image = read_image(path);
+        }
+    } catch (const SceneError&) {
+        throw;
     } catch (const std::exception& e) {
         // The reader's message starts with the file's path.
         params.fail("file", std::string("cannot read texture image: ") + e.what());

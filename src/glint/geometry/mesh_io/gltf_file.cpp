@@ -50,9 +50,15 @@ bool write_nothing(std::string* error, const std::string&, const std::vector<uns
     return false;
 }
 
-// Images are left encoded: an image texture reads the file its URI names.
-bool keep_image_undecoded(tinygltf::Image*, const int, std::string*, std::string*, int, int,
-                          const unsigned char*, int, void*) {
+// Images are kept encoded, as the bytes of their file: glint's own image reader decodes them when a
+// texture asks (gltf_image_bytes). Images in files beside the model never reach here
+// (TINYGLTF_NO_EXTERNAL_IMAGE): a texture reads their file itself.
+bool keep_image_encoded(tinygltf::Image* image, const int, std::string*, std::string*, int, int,
+                        const unsigned char* bytes, int size, void*) {
+    if (size > 0) {
+        image->image.assign(bytes, bytes + size);
+        image->as_is = true;
+    }
     return true;
 }
 
@@ -201,7 +207,7 @@ std::shared_ptr<const GltfFile> load_gltf_file(const std::filesystem::path& path
     }
     tinygltf::TinyGLTF loader;
     loader.SetFsCallbacks({&file_exists, &expand_nothing, &read_whole_file, &write_nothing, nullptr});
-    loader.SetImageLoader(&keep_image_undecoded, nullptr);
+    loader.SetImageLoader(&keep_image_encoded, nullptr);
     auto model = std::make_shared<tinygltf::Model>();
     std::string errors, warnings;
     const std::string base_dir = path.parent_path().empty() ? "." : path.parent_path().string();
@@ -348,6 +354,26 @@ MeshData gltf_primitive_mesh(const GltfFile& file, int mesh_index, int primitive
                  " is made of points or lines, not triangles");
     }
     return data;
+}
+
+}  // namespace glint
+
+namespace glint {
+
+const std::vector<unsigned char>& gltf_image_bytes(const GltfFile& file, int image, const SourcePos& pos) {
+    const tinygltf::Model& model = *file.model;
+    if (image < 0 || static_cast<std::size_t>(image) >= model.images.size()) {
+        fail(pos, file,
+             "it has no image " + std::to_string(image) + " (it has " + std::to_string(model.images.size()) +
+                 ")");
+    }
+    const tinygltf::Image& stored = model.images[static_cast<std::size_t>(image)];
+    if (!stored.as_is || stored.image.empty()) {
+        fail(pos, file,
+             "image " + std::to_string(image) + " is not stored in the file" +
+                 (stored.uri.empty() ? std::string() : " (it is the file '" + stored.uri + "')"));
+    }
+    return stored.image;
 }
 
 }  // namespace glint

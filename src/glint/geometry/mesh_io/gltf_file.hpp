@@ -26,11 +26,13 @@ struct GltfFile {
 inline constexpr std::uint64_t kMaxGltfFileBytes = std::uint64_t{1} << 31;
 
 // Reads a .gltf or .glb file and the buffers it refers to (relative to its folder; data: URIs too).
-// Images are not decoded here: an image texture reads its file itself. The last file read is kept
+// Images are not decoded here: an image texture reads its file itself, or decodes the bytes of one
+// stored in the model (gltf_image_bytes). The last file read is kept
 // (path, size and modification time must match), so the meshes of a model's primitives, built one
 // after another, read it once; forget_gltf_files() lets it go. A file tinygltf cannot read is a
 // SceneError at `mentioned_at` with tinygltf's reason.
-std::shared_ptr<const GltfFile> load_gltf_file(const std::filesystem::path& path, const SourcePos& mentioned_at);
+std::shared_ptr<const GltfFile> load_gltf_file(const std::filesystem::path& path,
+                                               const SourcePos& mentioned_at);
 void forget_gltf_files();
 
 // The triangles of primitive `primitive` of mesh `mesh`: POSITION, NORMAL and TEXCOORD_0 (glTF's v
@@ -42,5 +44,10 @@ void forget_gltf_files();
 int gltf_primitive_count(const GltfFile& file, int mesh, const SourcePos& mentioned_at);
 
 MeshData gltf_primitive_mesh(const GltfFile& file, int mesh, int primitive, const SourcePos& mentioned_at);
+
+// The encoded bytes (PNG, JPEG, …) of image `image` when the file holds it (a buffer view or a data:
+// URI); a SceneError at `mentioned_at` when it has no such image or the image is a file of its own.
+const std::vector<unsigned char>& gltf_image_bytes(const GltfFile& file, int image,
+                                                   const SourcePos& mentioned_at);
 
 }  // namespace glint
