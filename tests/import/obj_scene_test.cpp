@@ -47,6 +47,21 @@ TEST(ObjTextureCoordinates, CornersThatDifferOnlyInVtBecomeSeparateVertices) {
     EXPECT_EQ(data.uvs[3], (Point2{0.5, 0.5}));
 }
 
+TEST(PlyTextureCoordinates, AreReadUnderEachOfTheirNames) {
+    test::TempDir dir;
+    for (const auto& [u, v] : {std::pair{"u", "v"}, {"s", "t"}, {"texture_u", "texture_v"}}) {
+        const std::string ply = std::string("ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n") +
+                                "property float y\nproperty float z\nproperty float " + u +
+                                "\nproperty float " + v +
+                                "\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n" +
+                                "0 0 0 0.25 0.5\n1 0 0 1 0.5\n0 1 0 0.25 1\n3 0 1 2\n";
+        const MeshData data = load_mesh_file(dir.write(std::string("uv-") + u + ".ply", ply));
+        ASSERT_EQ(data.uvs.size(), 3u) << u;
+        EXPECT_EQ(data.uvs[0], (Point2{0.25, 0.5})) << u;
+        EXPECT_EQ(data.uvs[1], (Point2{1, 0.5})) << u;
+    }
+}
+
 TEST(ObjTextureCoordinates, BadIndicesArePositionedErrors) {
     test::TempDir dir;
     try {

@@ -1,7 +1,8 @@
-// Stanford PLY, ascii or binary (little or big endian). Read: the `vertex` element's x, y, z and
-// optional nx, ny, nz; `face` elements' vertex_indices (or vertex_index) lists of any size, split into
-// fans; `tristrips` elements' vertex_indices strips (−1 restarts a strip; the winding alternates, and
-// the degenerate triangles that stitch strips are dropped). Other elements and properties are read past.
+// Stanford PLY, ascii or binary (little or big endian). Read: the `vertex` element's x, y, z,
+// optional nx, ny, nz and optional texture coordinates (u, v; s, t; texture_u, texture_v); `face` elements'
+// vertex_indices (or vertex_index) lists of any size, split into fans; `tristrips` elements' vertex_indices
+// strips (−1 restarts a strip; the winding alternates, and the degenerate triangles that stitch strips are
+// dropped). Other elements and properties are read past.
 //
 // Hostile files: every element's count is checked against MeshLimits and against what the bytes after
 // the header can hold before anything is read or allocated, and so is every list's length before its
@@ -89,6 +90,9 @@ class PlyParser {
         }
         if (!has_normals_) {
             mesh_.normals.clear();
+        }
+        if (!has_uvs_) {
+            mesh_.uvs.clear();
         }
         return std::move(mesh_);
     }
@@ -514,26 +518,46 @@ class PlyParser {
         const bool is_vertex = element.name == "vertex";
         const bool is_face = element.name == "face";
         const bool is_strips = element.name == "tristrips";
-        int slot[6] = {-1, -1, -1, -1, -1, -1};  // property index of x, y, z, nx, ny, nz
-        static const char* kSlotNames[6] = {"x", "y", "z", "nx", "ny", "nz"};
-        if (is_vertex) {
-            for (std::size_t p = 0; p < element.properties.size(); ++p) {
-                for (int s = 0; s < 6; ++s) {
-                    if (element.properties[p].name == kSlotNames[s] && !element.properties[p].is_list) {
-                        slot[s] = static_cast<int>(p);
-                    }
+        // Property index of x, y, z, nx, ny, nz and the texture coordinates u, v, which exporters
+        // name u/v, s/t or texture_u/texture_v (pbrt's plymesh, Blender, meshlab).
+        constexpr int kSlots = 8;
+        int slot[kSlots] = {-1, -1, -1, -1, -1, -1, -1, -1};
+        static const char* kSlotNames[kSlots] = {"x", "y", "z", "nx", "ny", "nz", "u", "v"};
+        const auto slot_of = [](const std::string& name) {
+            for (int s = 0; s < kSlots; ++s) {
+                if (name == kSlotNames[s]) {
+                    return s;
                 }
             }
-            // There is one vertex element (parse_header rejects a second), so the normals are all or
-            // none of the positions'.
+            if (name == "s" || name == "texture_u" || name == "texture_s") {
+                return 6;
+            }
+            if (name == "t" || name == "texture_v" || name == "texture_t") {
+                return 7;
+            }
+            return -1;
+        };
+        if (is_vertex) {
+            for (std::size_t p = 0; p < element.properties.size(); ++p) {
+                const int s = slot_of(element.properties[p].name);
+                if (s >= 0 && !element.properties[p].is_list) {
+                    slot[s] = static_cast<int>(p);
+                }
+            }
+            // There is one vertex element (parse_header rejects a second), so the normals and texture
+            // coordinates are all or none of the positions'.
             has_normals_ = slot[3] >= 0 && slot[4] >= 0 && slot[5] >= 0;
+            has_uvs_ = slot[6] >= 0 && slot[7] >= 0;
             // check_counts has bounded the count by the file's size and the vertex limit.
             mesh_.positions.reserve(element.count);
             if (has_normals_) {
                 mesh_.normals.reserve(element.count);
             }
+            if (has_uvs_) {
+                mesh_.uvs.reserve(element.count);
+            }
         }
-        double values[6] = {0, 0, 0, 0, 0, 0};
+        double values[kSlots] = {0, 0, 0, 0, 0, 0, 0, 0};
         for (std::uint64_t i = 0; i < element.count; ++i) {
             current_index_ = i;
             for (std::size_t p = 0; p < element.properties.size(); ++p) {
@@ -550,7 +574,7 @@ class PlyParser {
                     continue;
                 }
                 const double value = read_value(property.type);
-                for (int s = 0; s < 6; ++s) {
+                for (int s = 0; s < kSlots; ++s) {
                     if (slot[s] == static_cast<int>(p)) {
                         values[s] = value;
                         if (s < 3 && !(std::abs(value) <= kMaxMeshCoordinate)) {
@@ -567,6 +591,9 @@ class PlyParser {
                 mesh_.positions.push_back({values[0], values[1], values[2]});
                 if (has_normals_) {
                     mesh_.normals.push_back({values[3], values[4], values[5]});
+                }
+                if (has_uvs_) {
+                    mesh_.uvs.push_back({values[6], values[7]});
                 }
             }
         }
@@ -591,6 +618,7 @@ class PlyParser {
     std::uint64_t current_index_ = 0;
 
     bool has_normals_ = false;
+    bool has_uvs_ = false;
     MeshData mesh_;
 };
 
