@@ -115,6 +115,7 @@ struct RenderOptions {
     std::vector<std::string> sets;  // --set key.path=value, in order
     bool quiet = false;
     glint::ImportOptions import;  // for scenes of other tools (glint/import)
+    double time_limit = 0;        // seconds; 0: none
 };
 
 int bad_input(const std::string& message) {
@@ -167,6 +168,7 @@ int run_render(const RenderOptions& options) {
     glint::RenderCallbacks callbacks;
     callbacks.progress = [&bar](double fraction) { bar.update(fraction); };
     callbacks.stop_after_pass = &g_stop_after_pass;
+    callbacks.time_limit_seconds = options.time_limit;
     const glint::RenderStats stats = glint::render(scene, film, callbacks);
     bar.finish();
 
@@ -188,6 +190,12 @@ int run_render(const RenderOptions& options) {
         std::fprintf(stderr, "glint: interrupted: wrote %s with %u of %u samples per pixel\n",
                      output.string().c_str(), stats.samples_per_pixel, scene.view.settings.samples_per_pixel);
         return kExitInterrupted;
+    }
+    if (stats.time_limit_reached) {
+        // Not an error: the image is what the time allowed, every pixel with the same samples.
+        std::fprintf(stderr, "glint: time limit of %g s reached: %s has %u of %u samples per pixel\n",
+                     options.time_limit, output.string().c_str(), stats.samples_per_pixel,
+                     scene.view.settings.samples_per_pixel);
     }
     if (!options.quiet) {
         std::fprintf(stderr, "glint: %dx%d, %u spp, %.2f s, %.2f M rays, %.2f Mrays/s -> %s\n",
@@ -253,6 +261,11 @@ static int run(int argc, char** argv) {
                        "--set render.samples=64 --set camera.fov=30 --set objects.0.radius=2)");
     render->add_flag("-q,--quiet", options.quiet, "No progress bar and no summary");
     render->add_option("--camera", options.import.camera, "glTF scenes: the camera to look through, by name");
+    render
+        ->add_option("--time-limit", options.time_limit,
+                     "Stop at the end of the pass that crosses this many seconds and write the image "
+                     "reached (every pixel with the same samples)")
+        ->check(CLI::PositiveNumber);
     add_samples_command(app);
     add_serve_command(app);
     add_info_command(app);

@@ -2,6 +2,7 @@
 
 #include <tbb/global_control.h>
 
+#include <chrono>
 #include <mutex>
 #include <optional>
 
@@ -48,7 +49,13 @@ RenderStats render(const World& world, const View& view, Film& film, const Rende
         return callbacks.cancel && callbacks.cancel->load(std::memory_order_relaxed);
     };
 
-    bool cancelled_mid_pass = false, stopped_after_pass = false;
+    const auto start = std::chrono::steady_clock::now();
+    const auto out_of_time = [&] {
+        return callbacks.time_limit_seconds > 0 &&
+               std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() >=
+                   callbacks.time_limit_seconds;
+    };
+    bool cancelled_mid_pass = false, stopped_after_pass = false, time_limit_reached = false;
     while (!progressive.complete()) {
         // A cancel during a pass skips its remaining tiles, even of the last pass; a stop after the
         // pass matters only if a pass is left.
@@ -60,13 +67,18 @@ RenderStats render(const World& world, const View& view, Film& film, const Rende
             stopped_after_pass = true;
             break;
         }
+        if (!progressive.complete() && out_of_time()) {
+            time_limit_reached = true;
+            break;
+        }
     }
     RenderStats stats = progressive.stats();
     stats.cancelled = cancelled_mid_pass || stopped_after_pass;
+    stats.time_limit_reached = time_limit_reached && !stats.cancelled;
     if (cancelled_mid_pass) {
         stats.samples_per_pixel = progressive.target_samples();  // pixels differ: what was asked for
     }
-    if (callbacks.progress && !stats.cancelled) {
+    if (callbacks.progress && !stats.cancelled && !stats.time_limit_reached) {
         callbacks.progress(1.0);
     }
     return stats;

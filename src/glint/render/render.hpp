@@ -23,6 +23,9 @@ struct RenderStats {
     int first_nonfinite_x = -1, first_nonfinite_y = -1;
     std::uint32_t first_nonfinite_sample = 0;
     bool cancelled = false;  // stopped by `cancel` or `stop_after_pass` before all samples were taken
+    // Stopped by RenderCallbacks::time_limit_seconds at the end of a pass, before all samples were
+    // taken: every pixel has samples_per_pixel samples (fewer than asked for); not `cancelled`.
+    bool time_limit_reached = false;
 
     double mrays_per_second() const { return seconds > 0 ? rays.total() / seconds * 1e-6 : 0; }
 };
@@ -35,6 +38,10 @@ struct RenderCallbacks {
     // When set and true, the render stops at the end of the current pass, so that every pixel has the
     // same number of samples (RenderStats::samples_per_pixel): what Ctrl-C asks for.
     const std::atomic<bool>* stop_after_pass = nullptr;
+    // When positive: the render stops at the end of the first pass that ends this many seconds or more
+    // after it started (RenderStats::time_limit_reached), so every pixel has the same samples. Passes
+    // take samples 0, 1, 2–3, 4–7, then 16 at a time, so the limit is overrun by at most one pass.
+    double time_limit_seconds = 0;
 };
 
 // Renders view.settings.samples_per_pixel samples into every pixel of `film` (which must have the
