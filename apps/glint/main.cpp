@@ -180,7 +180,7 @@ int run_render(const RenderOptions& options) {
                      stats.first_nonfinite_y, stats.first_nonfinite_sample);
     }
     try {
-        glint::write_image(film.to_image(), output);
+        glint::write_image(film.to_image(), output, scene.view.settings.display);
     } catch (const glint::ImageWriteError& e) {
         std::cerr << "glint: error: " << e.what() << '\n';
         return 1;
@@ -261,6 +261,12 @@ static int run(int argc, char** argv) {
                        "--set render.samples=64 --set camera.fov=30 --set objects.0.radius=2)");
     render->add_flag("-q,--quiet", options.quiet, "No progress bar and no summary");
     render->add_option("--camera", options.import.camera, "glTF scenes: the camera to look through, by name");
+    render->add_option("--exposure", options.flags.exposure,
+                       "Exposure in stops for PNG output: radiance × 2^EV before the tone curve (EXR and PFM "
+                       "stay linear)");
+    render->add_option(
+        "--tonemap", options.flags.tonemap,
+        "Tone curve for PNG output: clamp (default), reinhard, aces (EXR and PFM stay linear)");
     render
         ->add_option("--time-limit", options.time_limit,
                      "Stop at the end of the pass that crosses this many seconds and write the image "

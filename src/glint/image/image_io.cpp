@@ -300,15 +300,18 @@ void check_output_path(const std::filesystem::path& path) {
     ::unlink(probe.c_str());
 }
 
-void write_image(const Image& image, const std::filesystem::path& path) {
+void write_image(const Image& image, const std::filesystem::path& path, const DisplayTransform& display) {
     const std::optional<ImageFormat> format = image_format_for(path);
     if (!format) {
         write_failed(path, "unknown image format (use " + supported_image_extensions() + ")");
     }
     switch (*format) {
-        case ImageFormat::Png:
-            write_file_atomically(path, encode_png(image));
+        case ImageFormat::Png: {
+            const bool as_is =
+                display.exposure == 0 && display.curve == ToneCurve::Clamp;  // encode_png clamps
+            write_file_atomically(path, encode_png(as_is ? image : to_display(image, display)));
             break;
+        }
         case ImageFormat::Pfm:
             write_file_atomically(path, encode_pfm(image));
             break;

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "glint/image/image.hpp"
+#include "glint/image/tone_map.hpp"
 
 namespace glint {
 
@@ -44,10 +45,10 @@ struct ImageWriteError : std::runtime_error {
 };
 
 // Writes `image` (linear radiance) in the format of the path's extension:
-// .png  8-bit sRGB, values clamped to [0, 1] (the only tone mapping for now);
-// .pfm  32-bit float linear RGB, exactly what the film holds;
-// .exr  32-bit float linear RGB, exactly what the film holds.
-void write_image(const Image& image, const std::filesystem::path& path);
+// .png  8-bit sRGB after `display` (exposure and tone curve; by default values clamped to [0, 1]);
+// .pfm  32-bit float linear RGB, exactly what the film holds (`display` is not applied);
+// .exr  32-bit float linear RGB, exactly what the film holds (`display` is not applied).
+void write_image(const Image& image, const std::filesystem::path& path, const DisplayTransform& display = {});
 
 // Checks, before a render starts, that write_image(…, path) can succeed as far as the file system goes:
 // throws ImageWriteError naming the path and the reason when the extension is unknown, the path is a

@@ -1,5 +1,6 @@
 // SceneDesc → Scene: reads every object through Params and the name → constructor tables, so that
 // each mistake is reported at its position before anything is rendered.
+#include <cmath>
 #include <map>
 #include <optional>
 
@@ -71,6 +72,13 @@ RenderSettings read_render_settings(Params& p) {
         p.fail("seed", "render.seed must be zero or more");
     }
     s.seed = static_cast<std::uint64_t>(seed);
+    s.display.exposure = p.number("exposure", 0);
+    if (!(std::abs(s.display.exposure) <= 64)) {
+        p.fail("exposure", "render.exposure must be a number of stops from -64 to 64");
+    }
+    static const EnumTable<ToneCurve> curves = {
+        {"clamp", ToneCurve::Clamp}, {"reinhard", ToneCurve::Reinhard}, {"aces", ToneCurve::Aces}};
+    s.display.curve = p.enumeration("tonemap", curves, ToneCurve::Clamp);
     // Both sides may be within their limit and the whole still too large for memory.
     if (static_cast<std::int64_t>(s.width) * s.height > kMaxFilmPixels) {
         p.fail("render: the image is " + std::to_string(s.width) + "x" + std::to_string(s.height) +

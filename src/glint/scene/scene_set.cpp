@@ -116,6 +116,7 @@ std::vector<std::pair<std::string, std::string>> flag_edits(const RenderFlags& f
     const auto add = [&](const char* flag, const std::string& key, const auto& value) {
         if (value) {
             std::ostringstream text;
+            text.precision(17);  // a double as given, not rounded to 6 digits
             text << key << '=' << *value;
             edits.emplace_back(flag, text.str());
         }
@@ -127,6 +128,8 @@ std::vector<std::pair<std::string, std::string>> flag_edits(const RenderFlags& f
     add("--sampler", "render.sampler.type", flags.sampler);
     add("--integrator", "render.integrator.type", flags.integrator);
     add("--accel", "render.accelerator", flags.accelerator);
+    add("--exposure", "render.exposure", flags.exposure);
+    add("--tonemap", "render.tonemap", flags.tonemap);
     const Node* render = desc.root.find("render");
     const Node* integrator = render && render->is_map() ? render->find("integrator") : nullptr;
     const bool own_depth = integrator && integrator->is_map() && integrator->find("max_depth");

@@ -31,8 +31,10 @@ void apply_set(SceneDesc& desc, const std::string& assignment, const std::string
 struct RenderFlags {
     std::optional<int> width, height, max_depth;
     std::optional<std::uint32_t> samples_per_pixel;
-    std::optional<std::uint64_t> seed;
+    std::optional<std::int64_t> seed;  // signed, so that --seed -1 is refused by the builder, not wrapped
     std::optional<std::string> sampler, integrator, accelerator;
+    std::optional<double> exposure;
+    std::optional<std::string> tonemap;
 };
 
 // The flags given, as (flag, key.path=value). --max-depth sets the integrator's own max_depth when the

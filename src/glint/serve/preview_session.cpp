@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "glint/image/image_io.hpp"
+#include "glint/image/tone_map.hpp"
 #include "glint/render/progressive.hpp"
 #include "glint/scene/scene_writer.hpp"
 #include "glint/serve/serve_limits.hpp"
@@ -266,14 +267,15 @@ void PreviewSession::render_loop() {
                 Image coarse;
                 if (block > 1 && progressive->coarse_preview(block, coarse, cancelled)) {
                     publish(
-                        coarse, generation, 0, progressive->target_samples(), progressive->stats(),
+                        to_display(coarse, scene->view.settings.display), generation, 0,
+                        progressive->target_samples(), progressive->stats(),
                         std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count());
                 }
                 continue;
             }
             if (progressive->next_pass(cancelled)) {
-                publish(progressive->film().to_image(), generation, progressive->samples_done(),
-                        progressive->target_samples(), progressive->stats(),
+                publish(to_display(progressive->film().to_image(), scene->view.settings.display), generation,
+                        progressive->samples_done(), progressive->target_samples(), progressive->stats(),
                         std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count());
             }
         } catch (const std::exception& e) {

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "glint/image/tone_map.hpp"
+
 #include <cstdint>
 #include <string>
 
@@ -40,6 +42,7 @@ struct RenderSettings {
     std::uint64_t seed = 1;
     int threads = 0;     // 0: all cores
     int tile_size = 16;  // pixels per tile side; the image does not depend on it
+    DisplayTransform display;  // exposure and tone curve of 8-bit images (PNG, the preview), not of the film
 };
 
 }  // namespace glint

@@ -1,0 +1,27 @@
+// From the film's linear radiance to what an 8-bit image can show: an exposure, then a tone curve that
+// brings every value into [0, 1] (docs/scene-format.md, `render.exposure` and `render.tonemap`). Applied
+// to PNG output and the preview only; EXR and PFM keep exactly what the film holds.
+#pragma once
+
+#include "glint/image/image.hpp"
+
+namespace glint {
+
+enum class ToneCurve {
+    Clamp,     // min(x, 1): the paper's images, and glint's default
+    Reinhard,  // x / (1 + x), per channel (Reinhard et al. 2002, eq. 3)
+    Aces,      // Narkowicz's 2015 fit of the ACES reference rendering transform, per channel
+};
+
+struct DisplayTransform {
+    double exposure = 0;  // in stops (EV): radiance is multiplied by 2^exposure before the curve
+    ToneCurve curve = ToneCurve::Clamp;
+};
+
+// The curve at one value (x ≥ 0 after exposure); the result is in [0, 1].
+double tone_curve(ToneCurve curve, double x);
+
+// The image scaled by 2^exposure and passed through the curve, channel by channel; NaN becomes 0.
+Image to_display(const Image& linear, const DisplayTransform& transform);
+
+}  // namespace glint
