@@ -6,6 +6,7 @@
 // message and one of these codes.
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cerrno>
 #include <csignal>
@@ -25,6 +26,7 @@
 #include "commands.hpp"
 #include "glint/image/image_io.hpp"
 #include "glint/import/importer.hpp"
+#include "glint/params/diagnostics.hpp"
 #include "glint/render/render.hpp"
 #include "glint/scene/scene.hpp"
 #include "glint/scene/scene_desc.hpp"
@@ -206,6 +208,64 @@ int run_render(const RenderOptions& options) {
     return 0;
 }
 
+// The command line's mistakes, said as well as the scene file's: an unknown command or option with a
+// did-you-mean, a value that is not a number named as such. Exit code 2.
+int command_line_error(CLI::App& app, int argc, char** argv, const CLI::ParseError& error) {
+    std::vector<std::string> commands;
+    for (const CLI::App* command : app.get_subcommands({})) {
+        commands.push_back(command->get_name());
+    }
+    const std::string first = argc > 1 ? argv[1] : "";
+    if (!first.empty() && first[0] != '-' &&
+        std::find(commands.begin(), commands.end(), first) == commands.end()) {
+        std::cerr << "glint: error: " << glint::unknown_name_message("command", first, commands, "commands")
+                  << '\n';
+        return kExitBadInput;
+    }
+    // The subcommand given, whose options an unknown one is compared with.
+    const CLI::App* command = &app;
+    for (const CLI::App* sub : app.get_subcommands({})) {
+        if (sub->get_name() == first) {
+            command = sub;
+        }
+    }
+    std::vector<std::string> options;
+    for (const CLI::Option* option : command->get_options()) {
+        for (const std::string& name : option->get_lnames()) {
+            options.push_back("--" + name);
+        }
+    }
+    const std::string what = error.what();
+    if (dynamic_cast<const CLI::ExtrasError*>(&error)) {
+        for (int i = 2; i < argc; ++i) {
+            const std::string word = argv[i];
+            if (word.rfind("--", 0) == 0 &&
+                std::find(options.begin(), options.end(), word.substr(0, word.find('='))) == options.end()) {
+                std::cerr << "glint: error: "
+                          << glint::unknown_name_message("option", word.substr(0, word.find('=')), options,
+                                                         "options")
+                          << '\n';
+                return kExitBadInput;
+            }
+        }
+    }
+    if (dynamic_cast<const CLI::ConversionError*>(&error) ||
+        what.find("Could not convert") != std::string::npos) {
+        // CLI11 says "Could not convert: --spp = abc".
+        std::cerr << "glint: error: "
+                  << what.substr(what.find(':') == std::string::npos ? 0 : what.find(':') + 2)
+                  << ": not a number (or not one this option takes)\n";
+        return kExitBadInput;
+    }
+    if (dynamic_cast<const CLI::RequiredError*>(&error) && what.find("subcommand") != std::string::npos) {
+        std::cerr << "glint: error: a command is required: " << glint::join_words(commands)
+                  << " (glint --help)\n";
+        return kExitBadInput;
+    }
+    app.exit(error);
+    return kExitBadInput;
+}
+
 }  // namespace
 
 static int run(int argc, char** argv) {
@@ -288,8 +348,7 @@ static int run(int argc, char** argv) {
     } catch (const CLI::RuntimeError& e) {  // a subcommand's callback failed; it printed why
         return e.get_exit_code();
     } catch (const CLI::ParseError& e) {
-        app.exit(e);
-        return kExitBadInput;
+        return command_line_error(app, argc, argv, e);
     }
     if (render->parsed()) {
         return run_render(options);
