@@ -29,6 +29,7 @@
 #include "glint/params/diagnostics.hpp"
 #include "glint/render/render.hpp"
 #include "glint/scene/scene.hpp"
+#include "glint/scene/scene_checks.hpp"
 #include "glint/scene/scene_desc.hpp"
 #include "glint/scene/scene_set.hpp"
 
@@ -153,6 +154,9 @@ int run_render(const RenderOptions& options) {
             glint::apply_set(desc, set);
         }
         scene = glint::build_scene(desc);
+        for (const std::string& warning : glint::scene_warnings(scene)) {
+            std::cerr << "glint: warning: " << warning << '\n';
+        }
         if (options.threads) {
             scene.view.settings.threads = *options.threads;
         }
@@ -181,8 +185,14 @@ int run_render(const RenderOptions& options) {
                      static_cast<unsigned long long>(stats.nonfinite_samples), stats.first_nonfinite_x,
                      stats.first_nonfinite_y, stats.first_nonfinite_sample);
     }
+    const glint::Image image = film.to_image();
+    if (glint::all_black(image) && !stats.cancelled) {
+        std::fprintf(stderr,
+                     "glint: warning: every pixel of the image is black (no light reaches the camera: "
+                     "check the lights, the camera's direction and the integrator)\n");
+    }
     try {
-        glint::write_image(film.to_image(), output, scene.view.settings.display);
+        glint::write_image(image, output, scene.view.settings.display);
     } catch (const glint::ImageWriteError& e) {
         std::cerr << "glint: error: " << e.what() << '\n';
         return 1;
