@@ -2,6 +2,7 @@
 
 #include <tbb/global_control.h>
 
+#include <algorithm>
 #include <chrono>
 #include <mutex>
 #include <optional>
@@ -22,7 +23,13 @@ Rgb render_sample(const World& world, const View& view, const Integrator& integr
         return Rgb{};  // outside the camera's image (a fisheye's corners): black, nothing traced
     }
     SampleStream stream(*view.sampler, key, kFirstIntegratorDimension);
-    return integrator.radiance(world, ray, stream, rays);
+    const Rgb radiance = integrator.radiance(world, ray, stream, rays);
+    const double clamp = view.settings.clamp;
+    const double peak = std::max({radiance.r, radiance.g, radiance.b});
+    if (clamp > 0 && peak > clamp) {  // NaN peaks fail the test and reach the film's non-finite count
+        return radiance * (clamp / peak);
+    }
+    return radiance;
 }
 
 RenderStats render(const World& world, const View& view, Film& film, const RenderCallbacks& callbacks) {

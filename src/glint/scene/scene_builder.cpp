@@ -72,6 +72,10 @@ RenderSettings read_render_settings(Params& p) {
         p.fail("seed", "render.seed must be zero or more");
     }
     s.seed = static_cast<std::uint64_t>(seed);
+    s.clamp = p.non_negative("clamp", 0);
+    if (!std::isfinite(s.clamp)) {
+        p.fail("clamp", "render.clamp must be a finite number ≥ 0 (0: no clamp)");
+    }
     s.display.exposure = p.number("exposure", 0);
     if (!(std::abs(s.display.exposure) <= 64)) {
         p.fail("exposure", "render.exposure must be a number of stops from -64 to 64");

@@ -42,6 +42,9 @@ struct RenderSettings {
     std::uint64_t seed = 1;
     int threads = 0;     // 0: all cores
     int tile_size = 16;  // pixels per tile side; the image does not depend on it
+    // Firefly clamp: a sample brighter than this (its largest channel) is scaled down to it, keeping its
+    // hue. Biased (it removes energy), so 0, off, by default.
+    double clamp = 0;
     DisplayTransform display;  // exposure and tone curve of 8-bit images (PNG, the preview), not of the film
 };
 
