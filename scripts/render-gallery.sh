@@ -25,6 +25,14 @@ for spp in 1 4 16; do
 done
 render examples/fig08-sampling.yaml "$out/fig08-4-random.png" --spp 4 --sampler random
 render examples/fig08-sampling.yaml "$out/fig08-4-regular.png" --spp 4 --sampler regular
+# A third-party glTF test model (examples/assets/CREDITS.md; not in examples/ itself, so not rendered
+# above). It has no camera and glint's default view, from +z, shows one arrow of six: two views instead,
+# each showing three arrows (the quaternion ones from +x +y +z, the matrix ones from the opposite corner).
+orientation=examples/assets/gltf/OrientationTest.gltf
+render "$orientation" "$out/gltf-orientation-test.png" --width 480 --height 360 --spp 64 \
+  --set 'camera.eye=[15,11,17]'
+render "$orientation" "$out/gltf-orientation-test-back.png" --width 480 --height 360 --spp 64 \
+  --set 'camera.eye=[-15,-11,-17]'
 if [ ${#failed[@]} -gt 0 ]; then
   printf 'render-gallery: failed: %s\n' "${failed[@]}" >&2
   exit 1
