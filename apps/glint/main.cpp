@@ -185,7 +185,15 @@ int run_render(const RenderOptions& options) {
                      static_cast<unsigned long long>(stats.nonfinite_samples), stats.first_nonfinite_x,
                      stats.first_nonfinite_y, stats.first_nonfinite_sample);
     }
-    const glint::Image image = film.to_image();
+    glint::Image image = film.to_image();
+    if (const auto& crop = scene.view.settings.crop) {  // only the window was rendered: write it alone
+        glint::Image window(crop->width(), crop->height());
+        for (int y = 0; y < crop->height(); ++y) {
+            const float* from = image.pixel(crop->x0, crop->y0 + y);
+            std::copy(from, from + 3 * crop->width(), window.pixel(0, y));
+        }
+        image = std::move(window);
+    }
     if (glint::all_black(image) && !stats.cancelled) {
         std::fprintf(stderr,
                      "glint: warning: every pixel of the image is black (no light reaches the camera: "
@@ -331,6 +339,9 @@ static int run(int argc, char** argv) {
                        "--set render.samples=64 --set camera.fov=30 --set objects.0.radius=2)");
     render->add_flag("-q,--quiet", options.quiet, "No progress bar and no summary");
     render->add_option("--camera", options.import.camera, "glTF scenes: the camera to look through, by name");
+    render->add_option("--crop", options.flags.crop,
+                       "Render only the pixels x0 <= x < x1, y0 <= y < y1, written as an image of that size: "
+                       "x0,y0,x1,y1 (the same bits as that window of the full render)");
     render->add_option("--exposure", options.flags.exposure,
                        "Exposure in stops for PNG output: radiance × 2^EV before the tone curve (EXR and PFM "
                        "stay linear)");

@@ -39,8 +39,9 @@ RenderStats render(const World& world, const View& view, Film& film, const Rende
         thread_limit.emplace(tbb::global_control::max_allowed_parallelism,
                              static_cast<size_t>(view.settings.threads));
     }
+    const PixelWindow window = view.settings.crop.value_or(PixelWindow{0, 0, film.width(), film.height()});
     const double total_work =
-        static_cast<double>(film.width()) * film.height() * progressive.target_samples();
+        static_cast<double>(window.width()) * window.height() * progressive.target_samples();
     std::atomic<std::uint64_t> work_done{0};
     std::mutex progress_mutex;
     const auto tile_done = [&](std::uint64_t samples) {

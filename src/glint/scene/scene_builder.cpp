@@ -72,6 +72,25 @@ RenderSettings read_render_settings(Params& p) {
         p.fail("seed", "render.seed must be zero or more");
     }
     s.seed = static_cast<std::uint64_t>(seed);
+    if (const Node* crop = p.node("crop")) {
+        const auto fail_crop = [&](const std::string& why) {
+            p.fail("crop", "render.crop " + why +
+                               ": expected [x0, y0, x1, y1], the pixels x0 ≤ x < x1 and y0 ≤ y < y1 of the " +
+                               std::to_string(s.width) + "x" + std::to_string(s.height) + " image");
+        };
+        if (!crop->is_sequence() || crop->items.size() != 4) {
+            fail_crop("is not four numbers");
+        }
+        std::int64_t v[4];
+        for (std::size_t i = 0; i < 4; ++i) {
+            v[i] = node_integer(crop->items[i], "render.crop");
+        }
+        if (v[0] < 0 || v[1] < 0 || v[2] > s.width || v[3] > s.height || v[0] >= v[2] || v[1] >= v[3]) {
+            fail_crop("is not a non-empty window inside the image");
+        }
+        s.crop = PixelWindow{static_cast<int>(v[0]), static_cast<int>(v[1]), static_cast<int>(v[2]),
+                             static_cast<int>(v[3])};
+    }
     s.clamp = p.non_negative("clamp", 0);
     if (!std::isfinite(s.clamp)) {
         p.fail("clamp", "render.clamp must be a finite number ≥ 0 (0: no clamp)");

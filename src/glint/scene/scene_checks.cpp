@@ -44,9 +44,8 @@ std::vector<std::string> scene_warnings(const Scene& scene) {
             "material (docs/scene-format.md)");
     }
     if (dynamic_cast<const RaycastIntegrator*>(scene.view.integrator.get())) {
-        const bool any_delta = std::any_of(world.materials.begin(), world.materials.end(), [](const auto& m) {
-            return m && only_delta_lobes(*m);
-        });
+        const bool any_delta = std::any_of(world.materials.begin(), world.materials.end(),
+                                           [](const auto& m) { return m && only_delta_lobes(*m); });
         if (any_delta) {
             warnings.push_back(
                 "the scene has mirror or glass surfaces, which the raycast integrator (the default) does not "

@@ -130,6 +130,9 @@ std::vector<std::pair<std::string, std::string>> flag_edits(const RenderFlags& f
     add("--accel", "render.accelerator", flags.accelerator);
     add("--exposure", "render.exposure", flags.exposure);
     add("--tonemap", "render.tonemap", flags.tonemap);
+    if (flags.crop) {
+        edits.emplace_back("--crop", "render.crop=[" + *flags.crop + "]");
+    }
     const Node* render = desc.root.find("render");
     const Node* integrator = render && render->is_map() ? render->find("integrator") : nullptr;
     const bool own_depth = integrator && integrator->is_map() && integrator->find("max_depth");

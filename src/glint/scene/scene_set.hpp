@@ -35,6 +35,7 @@ struct RenderFlags {
     std::optional<std::string> sampler, integrator, accelerator;
     std::optional<double> exposure;
     std::optional<std::string> tonemap;
+    std::optional<std::string> crop;  // "x0,y0,x1,y1"
 };
 
 // The flags given, as (flag, key.path=value). --max-depth sets the integrator's own max_depth when the

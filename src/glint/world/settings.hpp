@@ -3,6 +3,7 @@
 #include "glint/image/tone_map.hpp"
 
 #include <cstdint>
+#include <optional>
 #include <string>
 
 #include "glint/sampling/pixel_filter.hpp"
@@ -28,6 +29,13 @@ inline std::string max_depth_limit_message(const std::string& what) {
 }
 
 // How to render: the scene's `render:` block with the command line's overrides applied.
+// A rectangle of pixels: columns [x0, x1) and rows [y0, y1), from the top-left pixel.
+struct PixelWindow {
+    int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+    int width() const { return x1 - x0; }
+    int height() const { return y1 - y0; }
+};
+
 struct RenderSettings {
     int width = 640;
     int height = 360;
@@ -42,6 +50,9 @@ struct RenderSettings {
     std::uint64_t seed = 1;
     int threads = 0;     // 0: all cores
     int tile_size = 16;  // pixels per tile side; the image does not depend on it
+    // Only these pixels are rendered (`render.crop`); each gets exactly the samples it gets in the
+    // full render, so the window is bit for bit that part of the full image. Unset: the whole film.
+    std::optional<PixelWindow> crop;
     // Firefly clamp: a sample brighter than this (its largest channel) is scaled down to it, keeping its
     // hue. Biased (it removes energy), so 0, off, by default.
     double clamp = 0;
