@@ -33,6 +33,9 @@ render "$orientation" "$out/gltf-orientation-test.png" --width 480 --height 360 
   --set 'camera.eye=[15,11,17]'
 render "$orientation" "$out/gltf-orientation-test-back.png" --width 480 --height 360 --spp 64 \
   --set 'camera.eye=[-15,-11,-17]'
+# McGuire's OBJ + MTL Cornell box (examples/assets/CREDITS.md), from its open front.
+render examples/assets/cornell-box-obj/CornellBox-Original.obj "$out/obj-cornell-box.png" --width 320 \
+  --height 320 --spp 256 --set 'camera.eye=[0,1,3.9]'
 if [ ${#failed[@]} -gt 0 ]; then
   printf 'render-gallery: failed: %s\n' "${failed[@]}" >&2
   exit 1
