@@ -22,6 +22,10 @@ class Camera {
     // A film point the camera sees nothing through (outside a fisheye's image circle) gets a ray
     // whose direction is the zero vector: see sees_scene().
     virtual Ray generate_ray(Point2 film, Point2 lens) const = 0;
+    // Whether generate_ray reads `lens`. The renderer draws no lens sample for a camera that does not
+    // (a sample_2d is ~160 instructions; the other dimensions are numbered apart, so they keep their
+    // values).
+    virtual bool uses_lens() const { return true; }
 };
 
 // Whether a camera ray looks into the scene. Every real camera ray has a unit direction, so the zero

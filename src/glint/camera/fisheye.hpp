@@ -16,6 +16,7 @@ class FisheyeCamera final : public Camera {
     FisheyeCamera(const ViewFrame& view, FilmSize film, double fov_radians)
         : view_(view), film_(film), fov_(fov_radians) {}
     Ray generate_ray(Point2 film, Point2 lens) const override;
+    bool uses_lens() const override { return false; }
 
     static std::unique_ptr<Camera> create(Params& params, const BuildContext& context, FilmSize film);
 

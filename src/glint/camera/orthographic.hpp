@@ -15,6 +15,7 @@ class OrthographicCamera final : public Camera {
     OrthographicCamera(const ViewFrame& view, FilmSize film, double view_height)
         : view_(view), film_(film), scale_(view_height / film.height) {}
     Ray generate_ray(Point2 film, Point2 lens) const override;
+    bool uses_lens() const override { return false; }
 
     static std::unique_ptr<Camera> create(Params& params, const BuildContext& context, FilmSize film);
 

@@ -13,6 +13,7 @@ class SphericalCamera final : public Camera {
   public:
     SphericalCamera(const ViewFrame& view, FilmSize film) : view_(view), film_(film) {}
     Ray generate_ray(Point2 film, Point2 lens) const override;
+    bool uses_lens() const override { return false; }
 
     static std::unique_ptr<Camera> create(Params& params, const BuildContext& context, FilmSize film);
 

@@ -13,6 +13,7 @@ Rectangle::Rectangle(const Vec3& corner, const Vec3& edge1, const Vec3& edge2)
     const Vec3 n = cross(edge1, edge2);
     const double n2 = length_squared(n);
     area_ = std::sqrt(n2);
+    pdf_area_ = 1 / area_;
     normal_ = n / area_;
     // q·(edge2 × n) = a·edge1·(edge2 × n) = a·|n|², and likewise for b.
     dual1_ = cross(edge2, n) / n2;
@@ -63,11 +64,6 @@ bool Rectangle::occluded(const Ray& ray, double t_max) const {
     Vec3 p;
     Point2 ab;
     return solve(ray, t_max, p, ab) != kInf;
-}
-
-std::optional<ShapeSample> Rectangle::sample_area(Point2 u) const {
-    // An affine map of the unit square: uniform in (a, b) is uniform by area.
-    return ShapeSample{corner_ + u.x * edge1_ + u.y * edge2_, normal_, 1 / area_};
 }
 
 std::unique_ptr<Shape> Rectangle::create(Params& params, const BuildContext&) {

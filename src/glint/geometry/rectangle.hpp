@@ -14,7 +14,12 @@ class Rectangle final : public Shape {
     bool intersect(const Ray& ray, double t_max, Hit& hit) const override;
     bool occluded(const Ray& ray, double t_max) const override;
     double area() const override { return area_; }
-    std::optional<ShapeSample> sample_area(Point2 u) const override;
+    std::optional<ShapeSample> sample_area(Point2 u) const override { return point_at(u); }
+    // sample_area() without the virtual call and the optional, for AreaLight.
+    ShapeSample point_at(Point2 u) const {
+        // An affine map of the unit square: uniform in (a, b) is uniform by area.
+        return {corner_ + u.x * edge1_ + u.y * edge2_, normal_, pdf_area_};
+    }
 
     static std::unique_ptr<Shape> create(Params& params, const BuildContext& context);
 
@@ -34,6 +39,7 @@ class Rectangle final : public Shape {
     // Dual vectors: for q in the plane, q = a·edge1 + b·edge2 with a = q·dual1, b = q·dual2.
     Vec3 dual1_, dual2_;
     double area_;
+    double pdf_area_;  // 1 / area_, not divided per sample
 };
 
 }  // namespace glint

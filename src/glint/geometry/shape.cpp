@@ -5,21 +5,7 @@ namespace glint {
 
 std::optional<SeenSample> Shape::sample_seen_from(const Vec3& ref, Point2 u) const {
     const std::optional<ShapeSample> s = sample_area(u);
-    if (!s) {
-        return std::nullopt;
-    }
-    const Vec3 to_point = s->point - ref;
-    const double d2 = length_squared(to_point);
-    if (!(d2 > 0)) {
-        return std::nullopt;
-    }
-    const Vec3 wi = to_point / std::sqrt(d2);
-    const double cos_at_point = std::abs(dot(s->normal, wi));
-    if (cos_at_point == 0) {
-        return std::nullopt;
-    }
-    // An area dA at distance d, seen at angle θ to its normal, spans dω = |cos θ| dA / d².
-    return SeenSample{s->point, s->normal, wi, s->pdf_area * d2 / cos_at_point};
+    return s ? seen_from(ref, *s) : std::nullopt;
 }
 
 double Shape::pdf_seen_from(const Vec3& ref, const Vec3& wi, const Hit& on_shape) const {

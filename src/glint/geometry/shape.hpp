@@ -32,6 +32,25 @@ struct SeenSample {
     double pdf_solid_angle = 0;  // density of wi per steradian at the reference point
 };
 
+// A point sampled by area, `s`, as seen from `ref`: its density converted to solid angle by
+// distance² / |cos θ| at the point (the default Shape::sample_seen_from). Nothing when the point is `ref`
+// or is seen edge-on. Inline, so that a light that knows its shape's type (AreaLight with a rectangle)
+// pays no call for it.
+inline std::optional<SeenSample> seen_from(const Vec3& ref, const ShapeSample& s) {
+    const Vec3 to_point = s.point - ref;
+    const double d2 = length_squared(to_point);
+    if (!(d2 > 0)) {
+        return std::nullopt;
+    }
+    const Vec3 wi = to_point / std::sqrt(d2);
+    const double cos_at_point = std::abs(dot(s.normal, wi));
+    if (cos_at_point == 0) {
+        return std::nullopt;
+    }
+    // An area dA at distance d, seen at angle θ to its normal, spans dω = |cos θ| dA / d².
+    return SeenSample{s.point, s.normal, wi, s.pdf_area * d2 / cos_at_point};
+}
+
 class Shape {
   public:
     virtual ~Shape() = default;

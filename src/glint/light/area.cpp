@@ -1,5 +1,6 @@
 #include "glint/light/area.hpp"
 
+#include "glint/geometry/rectangle.hpp"
 #include "glint/params/build_context.hpp"
 #include "glint/params/params.hpp"
 
@@ -23,24 +24,41 @@ bool emits_light(const Material& material) {
 }
 
 AreaLight::AreaLight(const Shape& shape, const Material& material, int samples)
-    : shape_(&shape), material_(&material), samples_(samples) {}
+    : shape_(&shape),
+      material_(&material),
+      samples_(samples),
+      rectangle_(dynamic_cast<const Rectangle*>(&shape)),
+      emitter_(dynamic_cast<const AreaEmitter*>(&material)) {}
 
-std::optional<LightSample> AreaLight::sample(const Hit& at, Point2 u) const {
-    const std::optional<SeenSample> seen = shape_->sample_seen_from(at.point, u);
-    return seen ? sample_of(*seen) : std::nullopt;
-}
-
-std::optional<LightSample> AreaLight::sample_of(const SeenSample& seen) const {
+namespace {
+// The light sample of `seen`, whose emitted radiance towards the reference point is `radiance`.
+std::optional<LightSample> light_sample(const SeenSample& seen, const Rgb& radiance) {
+    if (radiance.is_black() || !std::isfinite(seen.pdf_solid_angle)) {
+        return std::nullopt;
+    }
     LightSample s;
     s.delta = false;
     s.wi = seen.wi;
     s.position = seen.point;
     s.pdf = seen.pdf_solid_angle;
-    s.radiance = material_->emitted(light_hit(s.position, seen.normal), -s.wi);
-    if (s.radiance.is_black() || !std::isfinite(s.pdf)) {
-        return std::nullopt;
-    }
+    s.radiance = radiance;
     return s;
+}
+}  // namespace
+
+std::optional<LightSample> AreaLight::sample(const Hit& at, Point2 u) const {
+    if (rectangle_ && emitter_) {
+        // What the general path below computes (a rectangle samples by area, as the default
+        // Shape::sample_seen_from does), inline.
+        const std::optional<SeenSample> seen = seen_from(at.point, rectangle_->point_at(u));
+        return seen ? light_sample(*seen, emitter_->emitted_from(seen->normal, -seen->wi)) : std::nullopt;
+    }
+    const std::optional<SeenSample> seen = shape_->sample_seen_from(at.point, u);
+    return seen ? sample_of(*seen) : std::nullopt;
+}
+
+std::optional<LightSample> AreaLight::sample_of(const SeenSample& seen) const {
+    return light_sample(seen, material_->emitted(light_hit(seen.point, seen.normal), -seen.wi));
 }
 
 double AreaLight::pdf(const Hit& at, const Vec3& wi, const Hit* on_light) const {

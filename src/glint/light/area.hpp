@@ -6,6 +6,9 @@
 
 namespace glint {
 
+class AreaEmitter;
+class Rectangle;
+
 // A light with area: a shape whose material emits (material.emitted() ≠ 0). Every object with an
 // emitting material becomes one automatically, and {type: area, shape: {…}, radiance: L} adds such an
 // object (see AreaEmitter). The radiance a light sample carries is material.emitted() at the sampled
@@ -36,6 +39,11 @@ class AreaLight final : public Light {
     const Shape* shape_;
     const Material* material_;
     int samples_;
+    // The shape and the material again when they are a Rectangle and an AreaEmitter (else nullptr):
+    // a quad light, as most scenes' (the Cornell boxes'), is then sampled with no virtual call and no
+    // hit record, the same arithmetic inline (issue 13: it was 7 % of the Cornell box's instructions).
+    const Rectangle* rectangle_;
+    const AreaEmitter* emitter_;
 };
 
 // The material of a {type: area} light's shape: black (it reflects nothing) and emitting L from its
@@ -43,8 +51,10 @@ class AreaLight final : public Light {
 class AreaEmitter final : public Material {
   public:
     AreaEmitter(const Rgb& radiance, bool two_sided) : radiance_(radiance), two_sided_(two_sided) {}
-    Rgb emitted(const Hit& hit, const Vec3& wo) const override {
-        return two_sided_ || dot(hit.normal, wo) > 0 ? radiance_ : Rgb{};
+    Rgb emitted(const Hit& hit, const Vec3& wo) const override { return emitted_from(hit.normal, wo); }
+    // emitted() of a point with geometric normal `normal`, which is all it reads.
+    Rgb emitted_from(const Vec3& normal, const Vec3& wo) const {
+        return two_sided_ || dot(normal, wo) > 0 ? radiance_ : Rgb{};
     }
 
   protected:

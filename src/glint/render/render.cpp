@@ -17,7 +17,7 @@ Rgb render_sample(const World& world, const View& view, const Integrator& integr
     const SampleHashes key(
         SampleKey{view.settings.seed, static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y), sample});
     const Point2 offset = view.settings.filter.offset(view.sampler->sample_2d(key, kFilmDimension));
-    const Point2 lens = view.sampler->sample_2d(key, kLensDimension);
+    const Point2 lens = view.camera->uses_lens() ? view.sampler->sample_2d(key, kLensDimension) : Point2{};
     const Ray ray = view.camera->generate_ray({x + offset.x, y + offset.y}, lens);
     if (!sees_scene(ray)) {
         return Rgb{};  // outside the camera's image (a fisheye's corners): black, nothing traced
