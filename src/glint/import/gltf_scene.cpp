@@ -118,8 +118,7 @@ class GltfImporter {
         if (lights_.empty() && !emits_) {
             warn(
                 "the glTF scene has no light: glint lights it by a white sky (an environment of radiance 1)");
-            lights_.push_back(tree::map(
-                {{"type", tree::text("environment", at_)}, {"radiance", tree::number(1, at_)}}, at_));
+            lights_.push_back(tree::white_sky(at_));
         }
         if (!lights_.empty()) {
             root.push_back({"lights", tree::list(std::move(lights_), at_)});
@@ -365,15 +364,7 @@ class GltfImporter {
                 at_, "glTF file '" + path_.string() + "' has no camera named '" + options_.camera + "'");
         }
         warn("the glTF scene has no camera: glint looks at it from +z");
-        const bool empty = bounds_.lo.x > bounds_.hi.x;
-        const Vec3 centre = empty ? Vec3{0, 0, 0} : 0.5 * (bounds_.lo + bounds_.hi);
-        const double radius = empty ? 1 : std::max(0.5 * length(bounds_.hi - bounds_.lo), 1e-6);
-        const double distance = 1.1 * radius / std::sin(radians(20));
-        return tree::map({{"type", tree::text("pinhole", at_)},
-                          {"eye", tree::vec3(centre + Vec3{0, 0, distance}, at_)},
-                          {"look_at", tree::vec3(centre, at_)},
-                          {"fov", tree::number(40, at_)}},
-                         at_);
+        return tree::framing_camera(bounds_, at_);
     }
 
     void add_light(int index, const Matrix& world) {

@@ -6,6 +6,7 @@
 #include "glint/import/importer.hpp"
 #include "glint/import/obj_scene.hpp"
 #include "glint/import/pbrt_scene.hpp"
+#include "glint/import/scene_tree.hpp"
 #include "glint/scene/scene_writer.hpp"
 
 namespace glint {
@@ -50,11 +51,7 @@ void rebase_file_paths(Node& node, const std::filesystem::path& from, const std:
             Node& value = node.items[i];
             const bool path_key = node.keys[i] == "file" || node.keys[i] == "image";
             if (path_key && value.is_scalar() && std::filesystem::path(value.scalar).is_relative()) {
-                const std::filesystem::path target =
-                    std::filesystem::absolute(from / value.scalar).lexically_normal();
-                const std::filesystem::path relative =
-                    target.lexically_relative(std::filesystem::absolute(to));
-                value.scalar = (relative.empty() ? target : relative).generic_string();
+                value.scalar = scene_tree::path_relative_to(from / value.scalar, to);
             } else {
                 rebase_file_paths(value, from, to);
             }

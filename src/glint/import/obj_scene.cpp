@@ -46,12 +46,6 @@ Rgb reflectance(const MtlMaterial::Stated<Rgb>& stated, const char* what,
     return c;
 }
 
-std::string relative_to(const std::filesystem::path& file, const std::filesystem::path& folder) {
-    const std::filesystem::path absolute = std::filesystem::absolute(file).lexically_normal();
-    const std::filesystem::path relative = absolute.lexically_relative(std::filesystem::absolute(folder));
-    return (relative.empty() ? absolute : relative).generic_string();
-}
-
 }  // namespace
 
 Node material_from_mtl(const MtlMaterial& mtl, const std::filesystem::path& base_dir,
@@ -103,7 +97,8 @@ Node material_from_mtl(const MtlMaterial& mtl, const std::filesystem::path& base
         }
         diffuse = tree::map(
             {{"type", tree::text("image", mtl.map_kd.pos)},
-             {"file", tree::text(relative_to(base_dir / mtl.map_kd.value, scene_dir), mtl.map_kd.pos)}},
+             {"file",
+              tree::text(tree::path_relative_to(base_dir / mtl.map_kd.value, scene_dir), mtl.map_kd.pos)}},
             mtl.map_kd.pos);
     }
     // A mirror: illum 3 and 5 (ray-traced reflection) with a black diffuse colour.
@@ -211,29 +206,17 @@ SceneDesc import_obj_scene(const std::filesystem::path& path, const ImportOption
     for (const Vec3& p : mesh.positions) {
         bounds.grow(p);
     }
-    const Vec3 centre = 0.5 * (bounds.lo + bounds.hi);
-    const double radius = std::max(0.5 * length(bounds.hi - bounds.lo), 1e-6);
-    const double fov = 40;
-    const double distance = 1.1 * radius / std::sin(radians(fov / 2));
     desc.warnings.push_back({whole_file, "an OBJ file has no camera: glint looks at the model from +z"});
     desc.root =
         tree::map({{"render", tree::map({{"integrator", tree::text("path", whole_file)}}, whole_file)},
-                   {"camera", tree::map({{"type", tree::text("pinhole", whole_file)},
-                                         {"eye", tree::vec3(centre + Vec3{0, 0, distance}, whole_file)},
-                                         {"look_at", tree::vec3(centre, whole_file)},
-                                         {"fov", tree::number(fov, whole_file)}},
-                                        whole_file)},
+                   {"camera", tree::framing_camera(bounds, whole_file)},
                    {"objects", tree::list(std::move(objects), whole_file)}},
                   whole_file);
     if (!emits) {
         desc.warnings.push_back({whole_file,
                                  "nothing in the OBJ file emits light: glint lights it by a white sky "
                                  "(an environment of radiance 1)"});
-        tree::set(desc.root, "lights",
-                  tree::list({tree::map({{"type", tree::text("environment", whole_file)},
-                                         {"radiance", tree::number(1, whole_file)}},
-                                        whole_file)},
-                             whole_file));
+        tree::set(desc.root, "lights", tree::list({tree::white_sky(whole_file)}, whole_file));
     }
     return desc;
 }

@@ -1,7 +1,11 @@
 #include "glint/import/scene_tree.hpp"
 
+#include <algorithm>
 #include <array>
 #include <charconv>
+#include <cmath>
+
+#include "glint/core/math.hpp"
 
 namespace glint::scene_tree {
 
@@ -79,6 +83,29 @@ void set(Node& map_node, const std::string& key, Node value) {
 
 SourcePos file_position(const std::string& path) {
     return {SourceFile::from_text(path, ""), 0, 0};
+}
+
+Node framing_camera(const Bounds3& bounds, const SourcePos& pos) {
+    constexpr double kFov = 40;
+    const bool empty = bounds.lo.x > bounds.hi.x;
+    const Vec3 centre = empty ? Vec3{0, 0, 0} : 0.5 * (bounds.lo + bounds.hi);
+    const double radius = empty ? 1 : std::max(0.5 * length(bounds.hi - bounds.lo), 1e-6);
+    const double distance = 1.1 * radius / std::sin(radians(kFov / 2));  // the sphere and a margin
+    return map({{"type", text("pinhole", pos)},
+                {"eye", vec3(centre + Vec3{0, 0, distance}, pos)},
+                {"look_at", vec3(centre, pos)},
+                {"fov", number(kFov, pos)}},
+               pos);
+}
+
+Node white_sky(const SourcePos& pos) {
+    return map({{"type", text("environment", pos)}, {"radiance", number(1, pos)}}, pos);
+}
+
+std::string path_relative_to(const std::filesystem::path& file, const std::filesystem::path& folder) {
+    const std::filesystem::path absolute = std::filesystem::absolute(file).lexically_normal();
+    const std::filesystem::path relative = absolute.lexically_relative(std::filesystem::absolute(folder));
+    return (relative.empty() ? absolute : relative).generic_string();
 }
 
 }  // namespace glint::scene_tree
