@@ -467,9 +467,7 @@ MeshData gltf_mesh(Params& params, const std::filesystem::path& path) {
 }
 
 bool is_gltf(const std::string& file) {
-    std::string extension = std::filesystem::path(file).extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    const std::string extension = mesh_io::lower_case_extension(file);
     return extension == ".gltf" || extension == ".glb";
 }
 

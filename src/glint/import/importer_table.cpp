@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cctype>
 
+#include "glint/geometry/mesh_io/mesh_data.hpp"
 #include "glint/import/gltf_scene.hpp"
 #include "glint/import/importer.hpp"
 #include "glint/import/obj_scene.hpp"
@@ -30,9 +31,7 @@ std::string importer_formats() {
 }
 
 SceneDesc load_scene(const std::filesystem::path& path, const ImportOptions& options) {
-    std::string extension = path.extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    const std::string extension = mesh_io::lower_case_extension(path);
     for (const ImporterEntry& entry : importers()) {
         if (extension == entry.extension) {
             return entry.import(path, options);

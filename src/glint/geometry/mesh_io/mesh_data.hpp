@@ -69,6 +69,8 @@ namespace mesh_io {
 // `max_bytes` (its size is asked first, so nothing is allocated for a file that is too large).
 std::string read_file(const std::filesystem::path& path, const SourcePos& mentioned_at,
                       std::uint64_t max_bytes);
+// A file's extension in lower case, with its dot (".obj"): how files are told apart.
+std::string lower_case_extension(const std::filesystem::path& path);
 // "268435456 (2^28)": a limit as messages show it.
 std::string limit_text(std::uint64_t limit);
 }  // namespace mesh_io

@@ -45,13 +45,18 @@ std::string read_file(const std::filesystem::path& path, const SourcePos& mentio
     return bytes;
 }
 
+std::string lower_case_extension(const std::filesystem::path& path) {
+    std::string extension = path.extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return extension;
+}
+
 }  // namespace mesh_io
 
 MeshData load_mesh_file(const std::filesystem::path& path, const SourcePos& mentioned_at,
                         const MeshLimits& limits) {
-    std::string extension = path.extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    const std::string extension = mesh_io::lower_case_extension(path);
     std::error_code error;
     if (!std::filesystem::is_regular_file(path, error)) {
         throw SceneError(mentioned_at, "mesh file '" + path.string() +
