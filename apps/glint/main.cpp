@@ -347,7 +347,7 @@ static int run(int argc, char** argv) {
                        "stay linear)");
     render->add_option(
         "--tonemap", options.flags.tonemap,
-        "Tone curve for PNG output: clamp (default), reinhard, aces (EXR and PFM stay linear)");
+        "Tone curve for PNG output: clamp (default), reinhard, aces, agx (EXR and PFM stay linear)");
     render
         ->add_option("--time-limit", options.time_limit,
                      "Stop at the end of the pass that crosses this many seconds and write the image "

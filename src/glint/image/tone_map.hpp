@@ -3,6 +3,7 @@
 // to PNG output and the preview only; EXR and PFM keep exactly what the film holds.
 #pragma once
 
+#include "glint/core/color.hpp"
 #include "glint/image/image.hpp"
 
 namespace glint {
@@ -11,6 +12,10 @@ enum class ToneCurve {
     Clamp,     // min(x, 1): the paper's images, and glint's default
     Reinhard,  // x / (1 + x), per channel (Reinhard et al. 2002, eq. 3)
     Aces,      // Narkowicz's 2015 fit of the ACES reference rendering transform, per channel
+    // Sobotka's AgX base (Blender 4's default view) in Wrensch's minimal form: a mix of the channels,
+    // a log encoding over 16.5 stops, a sigmoid, the mix undone. Per pixel, not per channel: bright
+    // saturated colours go towards white instead of clipping to a hue.
+    Agx,
 };
 
 struct DisplayTransform {
@@ -18,8 +23,12 @@ struct DisplayTransform {
     ToneCurve curve = ToneCurve::Clamp;
 };
 
-// The curve at one value (x ≥ 0 after exposure); the result is in [0, 1].
+// The curve at one value (x ≥ 0 after exposure); the result is in [0, 1]. For a curve that mixes the
+// channels (AgX) this is its value on grey, x in all three.
 double tone_curve(ToneCurve curve, double x);
+
+// The curve at one pixel (linear RGB after exposure): each channel in [0, 1], linear.
+Rgb tone_map_pixel(ToneCurve curve, Rgb linear);
 
 // The image scaled by 2^exposure and passed through the curve, channel by channel; NaN becomes 0.
 Image to_display(const Image& linear, const DisplayTransform& transform);

@@ -99,8 +99,10 @@ RenderSettings read_render_settings(Params& p) {
     if (!(std::abs(s.display.exposure) <= 64)) {
         p.fail("exposure", "render.exposure must be a number of stops from -64 to 64");
     }
-    static const EnumTable<ToneCurve> curves = {
-        {"clamp", ToneCurve::Clamp}, {"reinhard", ToneCurve::Reinhard}, {"aces", ToneCurve::Aces}};
+    static const EnumTable<ToneCurve> curves = {{"clamp", ToneCurve::Clamp},
+                                                {"reinhard", ToneCurve::Reinhard},
+                                                {"aces", ToneCurve::Aces},
+                                                {"agx", ToneCurve::Agx}};
     s.display.curve = p.enumeration("tonemap", curves, ToneCurve::Clamp);
     // Both sides may be within their limit and the whole still too large for memory.
     if (static_cast<std::int64_t>(s.width) * s.height > kMaxFilmPixels) {
