@@ -855,7 +855,22 @@ def dictionaries():
                 "G\x00", "R\x00", "A\x00", "Y\x00", "\x01\x00\x00\x00", "\xff\xff\xff\x7f", "\x00\x00\x00\x80"])
 
 
+def checkpoint_seeds():
+    # The format of src/glint/render/checkpoint.hpp: magic, version, fingerprint, width, height, samples
+    # done and asked, then per pixel three doubles and a count.
+    def checkpoint(width, height, done, asked, pixel):
+        header = b"GLINTCKP" + struct.pack("<IQIIII", 1, 0x0123456789abcdef, width, height, done, asked)
+        return header + b"".join(struct.pack("<dddQ", *pixel(x, y)) for y in range(height) for x in range(width))
+    write("corpus/checkpoint/one-pixel.ckpt", checkpoint(1, 1, 1, 4, lambda x, y: (0.5, 0.25, 1.0, 1)))
+    write("corpus/checkpoint/gradient.ckpt",
+          checkpoint(4, 3, 3, 16, lambda x, y: (x * 0.75, y * 1.5, 0.125, 3 if x < 3 else 2)))
+    write("corpus/checkpoint/cropped.ckpt",
+          checkpoint(3, 3, 7, 8, lambda x, y: (1.0, 2.0, 3.0, 7) if (x, y) == (1, 1) else (0.0, 0.0, 0.0, 0)))
+    write("corpus/checkpoint/header-only.ckpt", checkpoint(2, 2, 1, 2, lambda x, y: (0, 0, 0, 0))[:36])
+
+
 def main():
+    checkpoint_seeds()
     png_seeds()
     bmp_seeds()
     tga_seeds()

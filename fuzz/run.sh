@@ -20,7 +20,7 @@ build=${FUZZ_BUILD:-$root/build/fuzz}
 seconds=${FUZZ_SECONDS:-60}
 runs=$build/runs
 
-all_harnesses=(scene_yaml scene_json scene_edit pbrt gltf obj ply mtl
+all_harnesses=(scene_yaml scene_json scene_edit pbrt gltf obj ply mtl checkpoint
                image_png image_jpeg image_bmp image_tga image_pnm image_hdr image_pfm image_exr)
 if [ $# -gt 0 ]; then
     harnesses=("$@")
@@ -34,7 +34,7 @@ max_len_of() {
     case "$1" in
         scene_yaml | scene_json | pbrt | gltf) echo 32768 ;;
         scene_edit) echo 4096 ;;
-        obj | ply | mtl) echo 16384 ;;
+        obj | ply | mtl | checkpoint) echo 16384 ;;
         *) echo 65536 ;;
     esac
 }

@@ -30,11 +30,18 @@ class Film {
     void clear();
     Image to_image() const;
 
-  private:
+    // What a pixel holds: the sum of its samples and how many. Read and restored whole by checkpoints
+    // (render/checkpoint.hpp), so that a resumed render adds to exactly the sums it left.
     struct Pixel {
         Rgb sum;
         std::uint64_t count = 0;
     };
+    const Pixel& raw_pixel(int x, int y) const { return pixels_[static_cast<size_t>(y) * width_ + x]; }
+    void set_raw_pixel(int x, int y, const Pixel& pixel) {
+        pixels_[static_cast<size_t>(y) * width_ + x] = pixel;
+    }
+
+  private:
     int width_;
     int height_;
     std::vector<Pixel> pixels_;

@@ -65,6 +65,13 @@ void ProgressiveRender::plan() {
     tallies_.resize(tiles_.size());
 }
 
+void ProgressiveRender::resume_after(std::uint32_t samples) {
+    if (done_ != 0 || samples >= target_) {
+        throw std::invalid_argument("render: a render resumes only before its first pass, below its target");
+    }
+    done_ = samples;
+}
+
 std::uint32_t ProgressiveRender::next_pass_samples() const {
     return std::min({done_ + 1, kMaxPassSamples, target_ - std::min(done_, target_)});
 }

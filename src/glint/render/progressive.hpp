@@ -1,7 +1,7 @@
 // The one render loop: tiles × passes of samples. render() runs it to the end; `glint serve` runs it a
 // pass at a time, showing each, and abandons it when the scene changes.
 //
-// The passes take samples 0, 1, 2–3, 4–7, … (then 16 at a time) of every pixel in order, so the film's
+// The passes take samples 0, 1–2, 3–6, 7–14, … (then 16 at a time) of every pixel in order, so the film's
 // sums are added in the same order whatever the threads, tiles or cancellations of earlier runs.
 // Non-finite samples (NaN, ∞) are left out of the film, counted and the first one named (stats()).
 #pragma once
@@ -37,6 +37,12 @@ class ProgressiveRender {
     bool complete() const { return done_ >= target_; }
     // The samples per pixel the next pass takes (0 when complete).
     std::uint32_t next_pass_samples() const;
+
+    // Continues a render stopped after `samples` samples per pixel (a checkpoint's): the film must hold
+    // exactly those samples of every pixel (render/checkpoint.hpp). The passes then take the samples
+    // they would have taken had the render never stopped. Throws std::invalid_argument if `samples` is
+    // not below the target or passes were already taken.
+    void resume_after(std::uint32_t samples);
 
     // Takes the next pass. Returns false, leaving the film partly updated (so useless), when
     // `cancelled` said so.

@@ -40,9 +40,12 @@ RenderStats render(const World& world, const View& view, Film& film, const Rende
                              static_cast<size_t>(view.settings.threads));
     }
     const PixelWindow window = view.settings.crop.value_or(PixelWindow{0, 0, film.width(), film.height()});
-    const double total_work =
-        static_cast<double>(window.width()) * window.height() * progressive.target_samples();
-    std::atomic<std::uint64_t> work_done{0};
+    if (callbacks.resume_after_samples > 0) {
+        progressive.resume_after(callbacks.resume_after_samples);
+    }
+    const double pixels = static_cast<double>(window.width()) * window.height();
+    const double total_work = pixels * progressive.target_samples();
+    std::atomic<std::uint64_t> work_done{static_cast<std::uint64_t>(pixels * progressive.samples_done())};
     std::mutex progress_mutex;
     const auto tile_done = [&](std::uint64_t samples) {
         const std::uint64_t done = work_done.fetch_add(samples) + samples;
@@ -70,6 +73,9 @@ RenderStats render(const World& world, const View& view, Film& film, const Rende
         if (!progressive.next_pass(cancelled, tile_done) || cancelled()) {
             cancelled_mid_pass = true;
             break;
+        }
+        if (callbacks.pass_done) {
+            callbacks.pass_done(film, progressive.samples_done());
         }
         if (!progressive.complete() && callbacks.stop_after_pass && callbacks.stop_after_pass->load()) {
             stopped_after_pass = true;
