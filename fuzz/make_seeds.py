@@ -857,16 +857,16 @@ def dictionaries():
 
 def checkpoint_seeds():
     # The format of src/glint/render/checkpoint.hpp: magic, version, fingerprint, width, height, samples
-    # done and asked, then per pixel three doubles and a count.
+    # done and asked, then per pixel four doubles (the sums of r, g, b and of Y²) and a count.
     def checkpoint(width, height, done, asked, pixel):
         header = b"GLINTCKP" + struct.pack("<IQIIII", 1, 0x0123456789abcdef, width, height, done, asked)
-        return header + b"".join(struct.pack("<dddQ", *pixel(x, y)) for y in range(height) for x in range(width))
-    write("corpus/checkpoint/one-pixel.ckpt", checkpoint(1, 1, 1, 4, lambda x, y: (0.5, 0.25, 1.0, 1)))
+        return header + b"".join(struct.pack("<ddddQ", *pixel(x, y)) for y in range(height) for x in range(width))
+    write("corpus/checkpoint/one-pixel.ckpt", checkpoint(1, 1, 1, 4, lambda x, y: (0.5, 0.25, 1.0, 0.1, 1)))
     write("corpus/checkpoint/gradient.ckpt",
-          checkpoint(4, 3, 3, 16, lambda x, y: (x * 0.75, y * 1.5, 0.125, 3 if x < 3 else 2)))
+          checkpoint(4, 3, 3, 16, lambda x, y: (x * 0.75, y * 1.5, 0.125, x * y * 0.5, 3 if x < 3 else 2)))
     write("corpus/checkpoint/cropped.ckpt",
-          checkpoint(3, 3, 7, 8, lambda x, y: (1.0, 2.0, 3.0, 7) if (x, y) == (1, 1) else (0.0, 0.0, 0.0, 0)))
-    write("corpus/checkpoint/header-only.ckpt", checkpoint(2, 2, 1, 2, lambda x, y: (0, 0, 0, 0))[:36])
+          checkpoint(3, 3, 7, 8, lambda x, y: (1.0, 2.0, 3.0, 1.5, 7) if (x, y) == (1, 1) else (0.0, 0.0, 0.0, 0.0, 0)))
+    write("corpus/checkpoint/header-only.ckpt", checkpoint(2, 2, 1, 2, lambda x, y: (0, 0, 0, 0, 0))[:36])
 
 
 def main():

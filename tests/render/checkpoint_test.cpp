@@ -33,6 +33,8 @@ void expect_same_film(const Film& a, const Film& b) {
             const Film::Pixel& p = a.raw_pixel(x, y);
             const Film::Pixel& q = b.raw_pixel(x, y);
             ASSERT_EQ(std::memcmp(&p.sum, &q.sum, sizeof(p.sum)), 0) << x << ", " << y;
+            ASSERT_EQ(std::memcmp(&p.luminance_squares, &q.luminance_squares, sizeof(double)), 0)
+                << x << ", " << y;
             ASSERT_EQ(p.count, q.count) << x << ", " << y;
         }
     }
@@ -116,7 +118,7 @@ TEST(Checkpoint, ADamagedFileIsRefusedWithWhatIsWrong) {
     small.film.add_sample(1, 1, Rgb(0.5, 0.25, 1));
     small.film.add_sample(1, 1, Rgb(0.5, 0.25, 1));
     const std::vector<unsigned char> good = encode_checkpoint(small);
-    ASSERT_EQ(good.size(), 36u + 6 * 32u);
+    ASSERT_EQ(good.size(), 36u + 6 * 40u);
     EXPECT_EQ(decode_checkpoint(good, "good.ckpt").film.raw_pixel(1, 1).count, 2u);
 
     auto bytes = good;
@@ -139,12 +141,15 @@ TEST(Checkpoint, ADamagedFileIsRefusedWithWhatIsWrong) {
     EXPECT_NE(decode_error(bytes).find("8 of 8 samples"), std::string::npos);
     bytes = good;
     bytes.pop_back();
-    EXPECT_NE(decode_error(bytes).find("227 bytes long; a 3 x 2 checkpoint has 228"), std::string::npos);
+    EXPECT_NE(decode_error(bytes).find("275 bytes long; a 3 x 2 checkpoint has 276"), std::string::npos);
     bytes = good;
-    poke<double>(bytes, 36 + 4 * 32, std::numeric_limits<double>::quiet_NaN());  // pixel (1, 1)'s red
-    EXPECT_NE(decode_error(bytes).find("pixel (1, 1) at byte 164"), std::string::npos) << decode_error(bytes);
+    poke<double>(bytes, 36 + 4 * 40, std::numeric_limits<double>::quiet_NaN());  // pixel (1, 1)'s red
+    EXPECT_NE(decode_error(bytes).find("pixel (1, 1) at byte 196"), std::string::npos) << decode_error(bytes);
     bytes = good;
-    poke<std::uint64_t>(bytes, 36 + 4 * 32 + 24, 3);  // 3 samples in a 2-sample checkpoint
+    poke<double>(bytes, 36 + 4 * 40 + 24, -1.0);  // a negative sum of squares
+    EXPECT_NE(decode_error(bytes).find("pixel (1, 1) at byte 196"), std::string::npos);
+    bytes = good;
+    poke<std::uint64_t>(bytes, 36 + 4 * 40 + 32, 3);  // 3 samples in a 2-sample checkpoint
     EXPECT_NE(decode_error(bytes).find("more than 2 samples"), std::string::npos);
 }
 

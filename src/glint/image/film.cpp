@@ -1,5 +1,7 @@
 #include "glint/image/film.hpp"
 
+#include <algorithm>
+
 namespace glint {
 
 Film::Film(int width, int height)
@@ -8,6 +10,16 @@ Film::Film(int width, int height)
 Rgb Film::pixel(int x, int y) const {
     const Pixel& p = pixels_[static_cast<size_t>(y) * width_ + x];
     return p.count ? p.sum / static_cast<double>(p.count) : Rgb{};
+}
+
+double Film::mean_variance(int x, int y) const {
+    const Pixel& p = pixels_[static_cast<size_t>(y) * width_ + x];
+    if (p.count < 2) {
+        return 0;
+    }
+    const double n = static_cast<double>(p.count);
+    const double sum = p.sum.luminance();
+    return std::max(0.0, (p.luminance_squares - sum * sum / n) / (n * (n - 1)));
 }
 
 void Film::clear() {

@@ -20,6 +20,8 @@ class Film {
     void add_sample(int x, int y, const Rgb& radiance) {
         Pixel& p = pixels_[static_cast<size_t>(y) * width_ + x];
         p.sum += radiance;
+        const double luminance = radiance.luminance();
+        p.luminance_squares += luminance * luminance;
         p.count += 1;
     }
     // The mean of the samples of a pixel (black before any).
@@ -34,8 +36,12 @@ class Film {
     // (render/checkpoint.hpp), so that a resumed render adds to exactly the sums it left.
     struct Pixel {
         Rgb sum;
+        double luminance_squares = 0;  // Σ Y² of the samples: their variance (the `variance` AOV)
         std::uint64_t count = 0;
     };
+    // The variance of the pixel's mean luminance as an estimate: the samples' unbiased variance of Y over
+    // their count, (Σ Y² − (Σ Y)² / n) / (n (n − 1)); 0 with fewer than two samples.
+    double mean_variance(int x, int y) const;
     const Pixel& raw_pixel(int x, int y) const { return pixels_[static_cast<size_t>(y) * width_ + x]; }
     void set_raw_pixel(int x, int y, const Pixel& pixel) {
         pixels_[static_cast<size_t>(y) * width_ + x] = pixel;

@@ -131,6 +131,8 @@ class Bsdf {
     double pdf_local(const Vec3& wo, const Vec3& wi) const { return material_->pdf(point_, wo, wi); }
 
     const Frame& frame() const { return frame_; }
+    // What the textures gave at the hit (the albedo AOV reads its reflectances).
+    const MaterialPoint& point() const { return point_; }
 
   private:
     const Material* material_;

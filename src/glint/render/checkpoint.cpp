@@ -17,7 +17,7 @@ static_assert(std::endian::native == std::endian::little, "checkpoints are writt
 constexpr char kMagic[8] = {'G', 'L', 'I', 'N', 'T', 'C', 'K', 'P'};
 constexpr std::uint32_t kFormatVersion = 1;
 constexpr std::size_t kHeaderBytes = 8 + 4 + 8 + 4 * 4;
-constexpr std::size_t kPixelBytes = 3 * 8 + 8;
+constexpr std::size_t kPixelBytes = 4 * 8 + 8;
 
 // Writes into a buffer sized for the whole file up front.
 class Writer {
@@ -75,6 +75,7 @@ std::vector<unsigned char> encode_checkpoint(const Checkpoint& checkpoint) {
             out.put(pixel.sum.r);
             out.put(pixel.sum.g);
             out.put(pixel.sum.b);
+            out.put(pixel.luminance_squares);
             out.put(pixel.count);
         }
     }
@@ -122,10 +123,12 @@ Checkpoint decode_checkpoint(const std::vector<unsigned char>& bytes, const std:
             pixel.sum.r = in.next<double>();
             pixel.sum.g = in.next<double>();
             pixel.sum.b = in.next<double>();
+            pixel.luminance_squares = in.next<double>();
             pixel.count = in.next<std::uint64_t>();
-            if (!pixel.sum.is_finite() || pixel.count > checkpoint.samples_done) {
+            if (!pixel.sum.is_finite() || !std::isfinite(pixel.luminance_squares) ||
+                pixel.luminance_squares < 0 || pixel.count > checkpoint.samples_done) {
                 fail(name, "pixel (" + std::to_string(x) + ", " + std::to_string(y) + ") at byte " +
-                               std::to_string(at) + " holds a non-finite sum or more than " +
+                               std::to_string(at) + " holds a non-finite or negative sum or more than " +
                                std::to_string(checkpoint.samples_done) + " samples");
             }
             checkpoint.film.set_raw_pixel(x, y, pixel);

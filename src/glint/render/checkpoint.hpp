@@ -11,7 +11,8 @@
 //   scene fingerprint               u64 (what the render was of: the scene as built, after flags and --set)
 //   width, height                   u32, u32 (≤ kMaxImageSide, width × height ≤ kMaxImagePixels)
 //   samples done, samples asked     u32, u32 (done < asked: a finished render needs no checkpoint)
-//   per pixel, row by row           3 × f64 (sum of r, g, b), u64 (samples in the sum, ≤ samples done)
+//   per pixel, row by row           3 × f64 (sum of r, g, b), f64 (sum of squared luminances),
+//                                   u64 (samples in the sums, ≤ samples done)
 #pragma once
 
 #include <cstdint>

@@ -11,19 +11,27 @@
 
 namespace glint {
 
+std::optional<Ray> camera_ray(const View& view, const SampleHashes& key, int x, int y) {
+    const Point2 offset = view.settings.filter.offset(view.sampler->sample_2d(key, kFilmDimension));
+    const Point2 lens = view.camera->uses_lens() ? view.sampler->sample_2d(key, kLensDimension) : Point2{};
+    const Ray ray = view.camera->generate_ray({x + offset.x, y + offset.y}, lens);
+    if (!sees_scene(ray)) {
+        return std::nullopt;
+    }
+    return ray;
+}
+
 Rgb render_sample(const World& world, const View& view, const Integrator& integrator, int x, int y,
                   std::uint32_t sample, RayCounters& rays) {
     // Hashed once here; every dimension of the path then costs the sampler one mix.
     const SampleHashes key(
         SampleKey{view.settings.seed, static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y), sample});
-    const Point2 offset = view.settings.filter.offset(view.sampler->sample_2d(key, kFilmDimension));
-    const Point2 lens = view.camera->uses_lens() ? view.sampler->sample_2d(key, kLensDimension) : Point2{};
-    const Ray ray = view.camera->generate_ray({x + offset.x, y + offset.y}, lens);
-    if (!sees_scene(ray)) {
+    const std::optional<Ray> ray = camera_ray(view, key, x, y);
+    if (!ray) {
         return Rgb{};  // outside the camera's image (a fisheye's corners): black, nothing traced
     }
     SampleStream stream(*view.sampler, key, kFirstIntegratorDimension);
-    const Rgb radiance = integrator.radiance(world, ray, stream, rays);
+    const Rgb radiance = integrator.radiance(world, *ray, stream, rays);
     const double clamp = view.settings.clamp;
     const double peak = std::max({radiance.r, radiance.g, radiance.b});
     if (clamp > 0 && peak > clamp) {  // NaN peaks fail the test and reach the film's non-finite count

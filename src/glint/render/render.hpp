@@ -5,6 +5,7 @@
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <optional>
 
 #include "glint/image/film.hpp"
 #include "glint/integrator/integrator.hpp"
@@ -54,6 +55,10 @@ struct RenderCallbacks {
 // settings' size). The result is a pure function of the world, the view and the seed: bit-identical for
 // any thread count or tile size.
 RenderStats render(const World& world, const View& view, Film& film, const RenderCallbacks& callbacks = {});
+
+// The camera ray of one sample (pixel x, y; its film and lens positions from the view's sampler), or
+// nullopt where the camera sees nothing (a fisheye's corners).
+std::optional<Ray> camera_ray(const View& view, const SampleHashes& key, int x, int y);
 
 // The radiance of one sample: what the render loop adds to the film for (pixel, sample index), traced
 // by `integrator` (the loop's: view.integrator prepared for the world, ProgressiveRender::integrator()).
