@@ -150,6 +150,7 @@ function connectEvents() {
     $('image').src = 'data:image/png;base64,' + frame.png;
     delete frame.png;
     lastFrame = frame;
+    showDisplay(frame);
     const stats = $('stats');
     stats.dataset.samples = frame.samples;
     stats.dataset.target = frame.target;
@@ -518,7 +519,38 @@ function setupMouse() {
   document.addEventListener('keydown', (e) => { if (e.key === 'Escape') setFocusMode(false); });
 }
 
+// ---- display ----------------------------------------------------------------------------------------
+
+// Exposure and tone curve for the eyes only (POST /api/display): the server shows the frames through
+// them without touching the render or the scene, so an exported scene keeps its own render.exposure.
+let displayTouched = false;
+function setupDisplay() {
+  const exposure = $('display-exposure');
+  const tonemap = $('display-tonemap');
+  const send = async () => {
+    displayTouched = true;
+    $('display-exposure-value').textContent = Number(exposure.value).toFixed(1);
+    try {
+      const response = await postJson('/api/display', {exposure: Number(exposure.value), tonemap: tonemap.value});
+      if (!response.ok) showError((await response.json()).error || `error ${response.status}`);
+    } catch (error) {
+      showError(`cannot reach glint serve: ${error}`);
+    }
+  };
+  exposure.addEventListener('input', send);
+  tonemap.addEventListener('change', send);
+}
+
+// Until the user moves them, the controls show what the frames are shown through (the scene's own).
+function showDisplay(frame) {
+  if (displayTouched || frame.exposure === undefined) return;
+  $('display-exposure').value = frame.exposure;
+  $('display-exposure-value').textContent = Number(frame.exposure).toFixed(1);
+  $('display-tonemap').value = frame.tonemap;
+}
+
 // ---- start ----------------------------------------------------------------------------------------
 
 setupMouse();
+setupDisplay();
 fetchState().then(connectEvents).catch((error) => showError(`cannot reach glint serve: ${error}`));

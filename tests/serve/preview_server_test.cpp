@@ -456,3 +456,51 @@ TEST_F(PreviewServerTest, StopEndsOpenEventStreams) {
 
 }  // namespace
 }  // namespace glint
+
+namespace glint {
+namespace {
+
+TEST_F(PreviewServerTest, SaveExrGivesTheFilmsRadianceAsItIsAndTheDisplayControlsOnlyTheView) {
+    // Wait for the finished render: its EXR is the film of `glint render` at 16 spp, bit for bit.
+    ASSERT_TRUE(read_frames([](const json& f) { return f["samples"] == f["target"]; }));
+    const auto exr = client().Get("/api/image.exr");
+    ASSERT_TRUE(exr);
+    ASSERT_EQ(exr->status, 200);
+    const std::vector<unsigned char> bytes(exr->body.begin(), exr->body.end());
+    const Image served = decode_image(bytes, "glint.exr");
+    const Scene scene = build_scene(small_scene());
+    Film film(64, 36);
+    render(*scene.world, scene.view, film);
+    EXPECT_EQ(served.rgb, film.to_image().rgb);
+
+    const auto generation = server_->session().state().generation;
+    const auto before = server_->session().latest_frame();
+    // A display change shows the same frame again at once, through the new curve: the same samples, the
+    // same generation (nothing re-rendered, the scene untouched), another PNG.
+    const auto set = post("/api/display", R"({"exposure": 2, "tonemap": "agx"})");
+    ASSERT_TRUE(set);
+    ASSERT_EQ(set->status, 200) << set->body;
+    EXPECT_EQ(json::parse(set->body)["tonemap"], "agx");
+    const auto after = server_->session().latest_frame();
+    EXPECT_GT(after->id, before->id);
+    EXPECT_EQ(after->samples, before->samples);
+    EXPECT_EQ(after->generation, generation);
+    EXPECT_EQ(server_->session().state().generation, generation);
+    EXPECT_NE(after->png, before->png);
+    EXPECT_EQ(after->png, encode_png(to_display(film.to_image(), {2, ToneCurve::Agx})));
+    EXPECT_EQ(server_->session().state().yaml.find("agx"), std::string::npos);  // not in the scene
+    // {} goes back to the scene's own display: the first PNG again.
+    ASSERT_EQ(post("/api/display", "{}")->status, 200);
+    EXPECT_EQ(server_->session().latest_frame()->png, before->png);
+
+    for (const char* bad :
+         {R"({"exposure": 100, "tonemap": "agx"})", R"({"exposure": 1, "tonemap": "filmic"})",
+          R"({"exposure": 1})", R"([1, 2])", R"({"exposure": "1", "tonemap": "agx"})"}) {
+        const auto refused = post("/api/display", bad);
+        ASSERT_TRUE(refused);
+        EXPECT_EQ(refused->status, 400) << bad;
+    }
+}
+
+}  // namespace
+}  // namespace glint

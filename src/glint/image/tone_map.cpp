@@ -68,6 +68,14 @@ double finite_or_zero(double x) {
 
 }  // namespace
 
+const EnumTable<ToneCurve>& tone_curve_table() {
+    static const EnumTable<ToneCurve> table = {{"clamp", ToneCurve::Clamp},
+                                               {"reinhard", ToneCurve::Reinhard},
+                                               {"aces", ToneCurve::Aces},
+                                               {"agx", ToneCurve::Agx}};
+    return table;
+}
+
 double tone_curve(ToneCurve curve, double x) {
     if (!(x > 0)) {
         return 0;  // negative, zero or NaN

@@ -5,6 +5,7 @@
 
 #include "glint/core/color.hpp"
 #include "glint/image/image.hpp"
+#include "glint/params/name_table.hpp"
 
 namespace glint {
 
@@ -17,6 +18,11 @@ enum class ToneCurve {
     // saturated colours go towards white instead of clipping to a hue.
     Agx,
 };
+
+// The curves by name, as render.tonemap, --tonemap and the preview's control say them.
+const EnumTable<ToneCurve>& tone_curve_table();
+// The largest exposure, in stops either way, that render.exposure and the preview take.
+inline constexpr double kMaxExposureStops = 64;
 
 struct DisplayTransform {
     double exposure = 0;  // in stops (EV): radiance is multiplied by 2^exposure before the curve

@@ -96,14 +96,10 @@ RenderSettings read_render_settings(Params& p) {
         p.fail("clamp", "render.clamp must be a finite number ≥ 0 (0: no clamp)");
     }
     s.display.exposure = p.number("exposure", 0);
-    if (!(std::abs(s.display.exposure) <= 64)) {
+    if (!(std::abs(s.display.exposure) <= kMaxExposureStops)) {
         p.fail("exposure", "render.exposure must be a number of stops from -64 to 64");
     }
-    static const EnumTable<ToneCurve> curves = {{"clamp", ToneCurve::Clamp},
-                                                {"reinhard", ToneCurve::Reinhard},
-                                                {"aces", ToneCurve::Aces},
-                                                {"agx", ToneCurve::Agx}};
-    s.display.curve = p.enumeration("tonemap", curves, ToneCurve::Clamp);
+    s.display.curve = p.enumeration("tonemap", tone_curve_table(), ToneCurve::Clamp);
     // Both sides may be within their limit and the whole still too large for memory.
     if (static_cast<std::int64_t>(s.width) * s.height > kMaxFilmPixels) {
         p.fail("render: the image is " + std::to_string(s.width) + "x" + std::to_string(s.height) +

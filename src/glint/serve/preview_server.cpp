@@ -16,12 +16,15 @@
 #include <atomic>
 #include <cerrno>
 #include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <functional>
 #include <nlohmann/json.hpp>
 
 #include "glint/camera/camera.hpp"
+#include "glint/image/image_io.hpp"
+#include "glint/image/tone_map.hpp"
 #include "glint/integrator/integrator.hpp"
 #include "glint/material/material.hpp"
 #include "glint/sampling/sampler.hpp"
@@ -674,6 +677,53 @@ struct PreviewServer::Impl {
                       }
                       send_json(res, {{"hit", true}, {"distance", hit->distance}, {"depth", hit->depth}});
                   }));
+
+        // Display-only exposure and tone curve (PreviewSession::set_display): {"exposure": stops,
+        // "tonemap": "agx"}, or {} for the scene's own. Answers with what frames are now shown through.
+        http.Post(
+            "/api/display", guarded([this](const httplib::Request& req, httplib::Response& res) {
+                if (!json_content_type(req, res)) {
+                    return;
+                }
+                const nlohmann::json body = parse_request_json(req.body);
+                const char* expected =
+                    "expected {\"exposure\": stops from -64 to 64, \"tonemap\": clamp, reinhard, aces or "
+                    "agx} (both, or {} for the scene's own)";
+                if (!body.is_object() || (!body.empty() && body.size() != 2)) {
+                    send_error(res, 400, expected);
+                    return;
+                }
+                std::optional<DisplayTransform> display;
+                if (!body.empty()) {
+                    const auto exposure = body.find("exposure");
+                    const auto tonemap = body.find("tonemap");
+                    if (exposure == body.end() || !exposure->is_number() || tonemap == body.end() ||
+                        !tonemap->is_string() || !(std::abs(exposure->get<double>()) <= kMaxExposureStops) ||
+                        !tone_curve_table().find(tonemap->get<std::string>())) {
+                        send_error(res, 400, expected);
+                        return;
+                    }
+                    display = DisplayTransform{exposure->get<double>(),
+                                               tone_curve_table().find(tonemap->get<std::string>())->value};
+                }
+                session.set_display(display);
+                const DisplayTransform now = session.display();
+                send_json(res,
+                          {{"exposure", now.exposure}, {"tonemap", tone_curve_table().name_of(now.curve)}});
+            }));
+
+        // The latest frame's radiance as the film holds it, as OpenEXR (32-bit float, linear).
+        http.Get("/api/image.exr", guarded([this](const httplib::Request&, httplib::Response& res) {
+                     auto frame = session.latest_frame();
+                     if (!frame || !frame->linear) {
+                         send_error(res, 503, "no image yet");
+                         return;
+                     }
+                     res.set_header("Cache-Control", "no-store");
+                     res.set_header("Content-Disposition", "attachment; filename=\"glint.exr\"");
+                     const std::vector<unsigned char> exr = encode_exr(*frame->linear);
+                     res.set_content(reinterpret_cast<const char*>(exr.data()), exr.size(), "image/x-exr");
+                 }));
 
         http.Get("/api/image.png", guarded([this](const httplib::Request&, httplib::Response& res) {
                      auto frame = session.latest_frame();

@@ -191,13 +191,45 @@ std::optional<PreviewSession::FocusHit> PreviewSession::focus_at(double x, doubl
     return FocusHit{distance, distance * cosine};
 }
 
-void PreviewSession::publish(const Image& image, std::uint64_t generation, std::uint32_t samples,
-                             std::uint32_t target, const RenderStats& stats, double seconds) {
+DisplayTransform PreviewSession::display() const {
+    std::lock_guard lock(mutex_);
+    return display_override_ ? *display_override_ : scene_->view.settings.display;
+}
+
+void PreviewSession::set_display(std::optional<DisplayTransform> display) {
+    std::lock_guard publishing(publish_mutex_);
+    std::shared_ptr<const PreviewFrame> latest;
+    RenderStats stats;
+    {
+        std::lock_guard lock(mutex_);
+        display_override_ = display;
+        latest = frame_;
+        stats = frame_stats_;
+    }
+    if (latest && latest->linear) {
+        publish_locked(latest->linear, latest->generation, latest->samples, latest->target, stats,
+                       latest->seconds);
+    }
+}
+
+void PreviewSession::publish(std::shared_ptr<const Image> linear, std::uint64_t generation,
+                             std::uint32_t samples, std::uint32_t target, const RenderStats& stats,
+                             double seconds) {
+    std::lock_guard publishing(publish_mutex_);
+    publish_locked(std::move(linear), generation, samples, target, stats, seconds);
+}
+
+void PreviewSession::publish_locked(std::shared_ptr<const Image> linear, std::uint64_t generation,
+                                    std::uint32_t samples, std::uint32_t target, const RenderStats& stats,
+                                    double seconds) {
     const double mrays = stats.mrays_per_second();
     auto frame = std::make_shared<PreviewFrame>();
     frame->generation = generation;
-    frame->width = image.width;
-    frame->height = image.height;
+    frame->width = linear->width;
+    frame->height = linear->height;
+    frame->display = display();
+    const Image image = to_display(*linear, frame->display);
+    frame->linear = std::move(linear);
     frame->samples = samples;
     frame->target = target;
     frame->mrays_per_second = mrays;
@@ -218,6 +250,8 @@ void PreviewSession::publish(const Image& image, std::uint64_t generation, std::
                                {"target", target},
                                {"mrays_per_second", std::round(mrays * 100) / 100},
                                {"seconds", std::round(seconds * 1000) / 1000},
+                               {"exposure", frame->display.exposure},
+                               {"tonemap", tone_curve_table().name_of(frame->display.curve)},
                                {"png", base64(frame->png)}};
         if (stats.nonfinite_samples > 0) {
             // Left out of the picture, as by glint render, and named so that the page can say where.
@@ -228,6 +262,7 @@ void PreviewSession::publish(const Image& image, std::uint64_t generation, std::
         }
         frame->event = "event: frame\ndata: " + data.dump() + "\n\n";
         frame_ = std::move(frame);
+        frame_stats_ = stats;
     }
     changed_.notify_all();
 }
@@ -267,14 +302,14 @@ void PreviewSession::render_loop() {
                 Image coarse;
                 if (block > 1 && progressive->coarse_preview(block, coarse, cancelled)) {
                     publish(
-                        to_display(coarse, scene->view.settings.display), generation, 0,
+                        std::make_shared<const Image>(std::move(coarse)), generation, 0,
                         progressive->target_samples(), progressive->stats(),
                         std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count());
                 }
                 continue;
             }
             if (progressive->next_pass(cancelled)) {
-                publish(to_display(progressive->film().to_image(), scene->view.settings.display), generation,
+                publish(std::make_shared<const Image>(progressive->film().to_image()), generation,
                         progressive->samples_done(), progressive->target_samples(), progressive->stats(),
                         std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count());
             }

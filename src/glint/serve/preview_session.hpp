@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "glint/image/image.hpp"
+#include "glint/image/tone_map.hpp"
 #include "glint/scene/scene.hpp"
 #include "glint/scene/scene_desc.hpp"
 #include "glint/serve/scene_edit.hpp"
@@ -37,6 +38,8 @@ struct PreviewFrame {
     double mrays_per_second = 0;
     double seconds = 0;                   // since the change that started this accumulation
     std::uint64_t nonfinite_samples = 0;  // NaN or infinite samples so far, left out of the picture
+    DisplayTransform display;             // how `png` was made from `linear`
+    std::shared_ptr<const Image> linear;  // the film's radiance as it is (Save EXR)
     std::vector<unsigned char> png;
     std::string event;  // the whole server-sent event ("event: frame\ndata: {…}\n\n"), made once for all
 };
@@ -82,6 +85,14 @@ class PreviewSession {
                                                        std::chrono::milliseconds timeout) const;
     PreviewStatus status() const;
 
+    // Display-only exposure and tone curve: every frame from now on is shown through `display` instead
+    // of the scene's render.exposure and render.tonemap, and the latest frame is shown again through it
+    // at once. The render goes on undisturbed (nothing is re-rendered), and the scene is not changed: an
+    // exported scene keeps its own values. nullopt goes back to the scene's.
+    void set_display(std::optional<DisplayTransform> display);
+    // What frames are shown through now: the override, or the current scene's own.
+    DisplayTransform display() const;
+
     // Where the ray through film point (x, y) (pixels, from the top-left) first hits the scene, through
     // the lens centre: the distance along the ray and the depth along the view axis (the distance of
     // the plane of focus that makes that point sharp). nullopt when the ray escapes.
@@ -96,8 +107,12 @@ class PreviewSession {
 
   private:
     void render_loop();
-    void publish(const Image& image, std::uint64_t generation, std::uint32_t samples, std::uint32_t target,
-                 const RenderStats& stats, double seconds);
+    // `linear` is the film's radiance; the frame shows it through display().
+    void publish(std::shared_ptr<const Image> linear, std::uint64_t generation, std::uint32_t samples,
+                 std::uint32_t target, const RenderStats& stats, double seconds);
+    void publish_locked(std::shared_ptr<const Image> linear, std::uint64_t generation, std::uint32_t samples,
+                        std::uint32_t target, const RenderStats& stats,
+                        double seconds);  // publish_mutex_ held
 
     std::uint64_t commit(EditedScene edited);
 
@@ -112,11 +127,16 @@ class PreviewSession {
     std::shared_ptr<const Scene> scene_;
     WorldCache world_cache_;  // used with edit_mutex_ held (and by the constructor)
     std::shared_ptr<const PreviewFrame> frame_;
+    std::optional<DisplayTransform> display_override_;
+    RenderStats frame_stats_;  // the latest frame's, to show it again through another display
     PreviewStatus status_;
     std::uint64_t next_frame_id_ = 1;
     std::atomic<std::uint64_t> generation_{1};
     std::atomic<bool> stop_{false};
 
+    // One publish at a time, from reading the display to storing the frame: a display change then
+    // never loses to a frame encoded through the display before it.
+    std::mutex publish_mutex_;
     std::mutex edit_mutex_;  // one edit at a time builds a scene
     std::thread render_thread_;
 };
