@@ -3,7 +3,8 @@
 #  1. on its scene built in code, whose every pixel is known without glint: a matte floor of albedo
 #     (0.2, 0.4, 0.6) under a sun of irradiance π straight above shows exactly its albedo;
 #  2. on a scene file, whose PFM must be the same bytes as `glint render`'s.
-# Run as: cmake -DBUILD_DIR=… -DSOURCE_DIR=… -DWORK_DIR=… -DGLINT_CLI=… -DCXX_COMPILER=… [-DLINK_FLAGS=…]
+# Run as: cmake -DBUILD_DIR=… -DSOURCE_DIR=… -DWORK_DIR=… -DGLINT_CLI=… -DCXX_COMPILER=… -DGENERATOR=…
+#         [-DLINK_FLAGS=…]
 #         -P install_example_test.cmake
 cmake_minimum_required(VERSION 3.25)
 
@@ -27,7 +28,7 @@ endforeach()
 
 # The example sees only the prefix: not the source tree, not this build. CMAKE_FIND_USE_PACKAGE_REGISTRY
 # off, so that no registered build tree can stand in for the install.
-run(${CMAKE_COMMAND} -S ${SOURCE_DIR}/examples/library -B ${WORK_DIR}/build -G Ninja -DCMAKE_BUILD_TYPE=Release
+run(${CMAKE_COMMAND} -S ${SOURCE_DIR}/examples/library -B ${WORK_DIR}/build -G ${GENERATOR} -DCMAKE_BUILD_TYPE=Release
     -DCMAKE_CXX_COMPILER=${CXX_COMPILER} -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF
     "-DCMAKE_EXE_LINKER_FLAGS=${LINK_FLAGS}")
 run(${CMAKE_COMMAND} --build ${WORK_DIR}/build)
