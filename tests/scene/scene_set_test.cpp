@@ -106,6 +106,19 @@ TEST(SceneSet, ListElementsAndNewMapsAlongThePath) {
     EXPECT_EQ(empty.position().column, 8);
 }
 
+TEST(SceneSet, BuildSceneAppliesTheFlagsThenEachSetInOrder) {
+    RenderFlags flags;
+    flags.width = 8;
+    flags.samples_per_pixel = 2;
+    const std::vector<std::string> sets = {"render.width=6", "render.height=5", "render.width=4"};
+    const Scene scene = build_scene(parse_scene_text(kScene, "scene.yaml", "."), flags, sets);
+    EXPECT_EQ(scene.view.settings.width, 4);   // the last set wins over the flag and the earlier set
+    EXPECT_EQ(scene.view.settings.height, 5);  // a set alone
+    EXPECT_EQ(scene.view.settings.samples_per_pixel, 2u);  // a flag alone
+    const std::vector<std::string> misspelt = {"render.samplse=4"};
+    EXPECT_THROW(build_scene(parse_scene_text(kScene, "scene.yaml", "."), {}, misspelt), SceneError);
+}
+
 TEST(SceneSet, TheCommandLineTakesSetAndReportsItsMistakesWithExitCode2) {
     test::TempDir dir;
     const auto scene = dir.write("scene.yaml", kScene);

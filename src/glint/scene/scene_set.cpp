@@ -146,8 +146,11 @@ void apply_flags(SceneDesc& desc, const RenderFlags& flags) {
     }
 }
 
-Scene build_scene(SceneDesc desc, const RenderFlags& flags) {
+Scene build_scene(SceneDesc desc, const RenderFlags& flags, std::span<const std::string> sets) {
     apply_flags(desc, flags);
+    for (const std::string& set : sets) {
+        apply_set(desc, set);
+    }
     return build_scene(desc);
 }
 

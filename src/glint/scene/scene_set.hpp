@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -45,7 +46,8 @@ std::vector<std::pair<std::string, std::string>> flag_edits(const RenderFlags& f
 // apply_set of each of flag_edits.
 void apply_flags(SceneDesc& desc, const RenderFlags& flags);
 
-// The scene with the flags applied: what `glint render --width … FILE` renders.
-Scene build_scene(SceneDesc desc, const RenderFlags& flags);
+// The scene with the flags applied, then each of `sets` (apply_set, in order): what `glint render --width …
+// --set … FILE` renders, and what the Python module's render() builds from its keywords.
+Scene build_scene(SceneDesc desc, const RenderFlags& flags, std::span<const std::string> sets = {});
 
 }  // namespace glint
