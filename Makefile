@@ -45,7 +45,7 @@ bench-peers: build
 	$(PYTHON) bench/peers.py --mode $(BENCH_MODE)
 
 format:
-	find src apps tests bench fuzz -name '*.cpp' -o -name '*.hpp' | xargs clang-format -i
+	find src apps tests bench fuzz python examples/library -name '*.cpp' -o -name '*.hpp' | xargs clang-format -i
 
 examples: build
 	./scripts/render-examples.sh build/examples
