@@ -231,26 +231,7 @@ TEST(GltfImport, AnImageStoredInTheModelRendersAsTheSameImageInAFile) {
 TEST(GltfImport, ConvertWritesAYamlThatRendersTheSameBits) {
     test::TempDir dir;
     dir.write("square.gltf", square_model(data_uri()).dump());
-    std::filesystem::create_directories(dir / "out");
-    ASSERT_EQ(test::run_glint("convert '" + (dir / "square.gltf").string() + "' -o '" +
-                              (dir / "out/square.yaml").string() + "'")
-                  .exit_code,
-              0);
-    const std::string settings = " --width 24 --height 16 --spp 4 -q";
-    ASSERT_EQ(test::run_glint("render '" + (dir / "square.gltf").string() + "' -o '" +
-                              (dir / "a.pfm").string() + "'" + settings)
-                  .exit_code,
-              0);
-    ASSERT_EQ(test::run_glint("render '" + (dir / "out/square.yaml").string() + "' -o '" +
-                              (dir / "b.pfm").string() + "'" + settings)
-                  .exit_code,
-              0);
-    const auto read = [](const std::filesystem::path& path) {
-        std::ifstream in(path, std::ios::binary);
-        return std::string(std::istreambuf_iterator<char>(in), {});
-    };
-    EXPECT_FALSE(read(dir / "a.pfm").empty());
-    EXPECT_EQ(read(dir / "a.pfm"), read(dir / "b.pfm"));
+    test::expect_convert_round_trip(dir, "square.gltf");
 }
 
 }  // namespace
