@@ -230,7 +230,8 @@ std::size_t Mesh::memory_bytes() const {
     return positions_.capacity() * sizeof(Vec3) + normals_.capacity() * sizeof(Vec3) +
            uvs_.capacity() * sizeof(Point2) + triangles_.capacity() * sizeof(triangles_[0]) +
            blocks_.capacity() * sizeof(TriangleBlock) + area_cdf_.capacity() * sizeof(double) +
-           bvh_.memory_bytes();
+           bvh_.memory_bytes() + tangents_.capacity() * sizeof(tangents_[0]) +
+           (normal_map_ ? normal_map_->image.rgb.capacity() * sizeof(float) : 0);
 }
 
 void Mesh::fill_hit(std::uint32_t index, const Vec3& p0, const Vec3& p1, const Vec3& p2,
