@@ -11,8 +11,10 @@
 #include <limits>
 #include <stdexcept>
 
+#include "glint/core/frame.hpp"
 #include "glint/geometry/mesh_io/gltf_file.hpp"
 #include "glint/geometry/triangle.hpp"
+#include "glint/image/image_lookup.hpp"
 #include "glint/params/build_context.hpp"
 #include "glint/params/params.hpp"
 
@@ -68,6 +70,56 @@ void check_mesh_data(const MeshData& data) {
             }
         }
     }
+}
+
+// Per-vertex tangents from the uvs (Lengyel's method, "Computing Tangent Space Basis Vectors for an
+// Arbitrary Mesh", 2001): each triangle's dp/du and dp/dv, solved from its edges and uv differences,
+// summed at its vertices; then at each vertex the sum of dp/du made orthogonal to the vertex's normal
+// (Gram–Schmidt), with w the sign that makes w · normal × tangent point along the summed dp/dv. On a
+// surface whose uv mapping is affine per connected flat patch this is the exact tangent frame, the one
+// MikkTSpace (glTF's reference) gives too; on curved meshes the two may differ slightly, where MikkTSpace
+// also splits vertices at uv seams and weights by corner angles. Triangles whose uvs are degenerate add
+// nothing; a vertex left without a tangent gets one from its normal alone (any perpendicular), so a
+// normal map there tilts in an arbitrary but fixed direction.
+std::vector<std::array<double, 4>> tangents_from_uvs(
+    const std::vector<Vec3>& positions, const std::vector<Vec3>& normals, const std::vector<Point2>& uvs,
+    const std::vector<std::array<std::uint32_t, 3>>& triangles) {
+    std::vector<Vec3> along_u(positions.size()), along_v(positions.size()), face_normals(positions.size());
+    for (const auto& tri : triangles) {
+        const Vec3 e1 = positions[tri[1]] - positions[tri[0]], e2 = positions[tri[2]] - positions[tri[0]];
+        const double du1 = uvs[tri[1]].x - uvs[tri[0]].x, dv1 = uvs[tri[1]].y - uvs[tri[0]].y;
+        const double du2 = uvs[tri[2]].x - uvs[tri[0]].x, dv2 = uvs[tri[2]].y - uvs[tri[0]].y;
+        const double det = du1 * dv2 - du2 * dv1;
+        const Vec3 face = cross(e1, e2);
+        for (std::uint32_t v : tri) {
+            face_normals[v] += face;
+        }
+        if (!(std::abs(det) > 0) || !std::isfinite(1 / det)) {
+            continue;
+        }
+        const Vec3 dpdu = (e1 * dv2 - e2 * dv1) / det, dpdv = (e2 * du1 - e1 * du2) / det;
+        if (!is_finite(dpdu) || !is_finite(dpdv)) {
+            continue;
+        }
+        for (std::uint32_t v : tri) {
+            along_u[v] += dpdu;
+            along_v[v] += dpdv;
+        }
+    }
+    std::vector<std::array<double, 4>> tangents(positions.size());
+    for (std::size_t v = 0; v < positions.size(); ++v) {
+        const Vec3 n = !normals.empty() && usable_normal(normals[v]) ? normalize(normals[v])
+                       : usable_normal(face_normals[v])              ? normalize(face_normals[v])
+                                                                     : Vec3{0, 0, 1};
+        Vec3 t = along_u[v] - n * dot(n, along_u[v]);
+        if (!usable_normal(t)) {
+            t = Frame::from_normal(n).s;
+        }
+        t = normalize(t);
+        const double w = dot(cross(n, t), along_v[v]) < 0 ? -1.0 : 1.0;
+        tangents[v] = {t.x, t.y, t.z, w};
+    }
+    return tangents;
 }
 
 }  // namespace
@@ -178,7 +230,8 @@ std::size_t Mesh::memory_bytes() const {
     return positions_.capacity() * sizeof(Vec3) + normals_.capacity() * sizeof(Vec3) +
            uvs_.capacity() * sizeof(Point2) + triangles_.capacity() * sizeof(triangles_[0]) +
            blocks_.capacity() * sizeof(TriangleBlock) + area_cdf_.capacity() * sizeof(double) +
-           bvh_.memory_bytes();
+           bvh_.memory_bytes() + tangents_.capacity() * sizeof(tangents_[0]) +
+           (normal_map_ ? normal_map_->image.rgb.capacity() * sizeof(float) : 0);
 }
 
 void Mesh::fill_hit(std::uint32_t index, const Vec3& p0, const Vec3& p1, const Vec3& p2,
@@ -207,6 +260,70 @@ void Mesh::fill_hit(std::uint32_t index, const Vec3& p0, const Vec3& p1, const V
     hit.error = kHitRelativeError *
                 std::max({max_component(abs(p0)), max_component(abs(p1)), max_component(abs(p2))});
     hit.element = index;
+    if (normal_map_) [[unlikely]] {
+        map_normal(index, at, hit);
+    }
+}
+
+void Mesh::map_normal(std::uint32_t index, const TriangleHit& at, Hit& hit) const {
+    const auto& tri = triangles_[index];
+    const double b[3] = {at.b0, at.b1, at.b2};
+    // The frame at the hit, unturned: the interpolated vertex normal (or the face's), the interpolated
+    // tangent made perpendicular to it, and the bitangent w · n × t.
+    Vec3 n = hit.normal;
+    if (!normals_.empty()) {
+        const Vec3 interpolated = b[0] * normals_[tri[0]] + b[1] * normals_[tri[1]] + b[2] * normals_[tri[2]];
+        if (usable_normal(interpolated)) {
+            n = normalize(interpolated);
+        }
+    }
+    Vec3 t;
+    double w = 0;
+    for (int k = 0; k < 3; ++k) {
+        const auto& tangent = tangents_[tri[static_cast<std::size_t>(k)]];
+        t += b[k] * Vec3{tangent[0], tangent[1], tangent[2]};
+        w += b[k] * tangent[3];
+    }
+    t -= n * dot(n, t);
+    const Rgb texel = lookup_bilinear_repeat(normal_map_->image, hit.uv);
+    const double x = (2 * texel.r - 1) * normal_map_->scale, y = (2 * texel.g - 1) * normal_map_->scale;
+    const double z = 2 * texel.b - 1;
+    Vec3 mapped = n;
+    // A texel of (0.5, 0.5, 1), glTF's "no change", leaves the normal exactly as it is.
+    if ((x != 0 || y != 0 || z <= 0) && usable_normal(t)) {
+        t = normalize(t);
+        const Vec3 bitangent = cross(n, t) * (w < 0 ? -1.0 : 1.0);
+        const Vec3 m = x * t + y * bitangent + z * n;
+        if (usable_normal(m)) {
+            mapped = normalize(m);
+        }
+    }
+    // Turned, like the interpolated normal, to the side of the face; a normal the map tilts below the
+    // face (possible at grazing tilts) is not a direction any light leaves from: the unmapped one stays.
+    const double side = dot(n, hit.normal) < 0 ? -1.0 : 1.0;
+    hit.shading_normal = dot(mapped, hit.normal) * side > 0 ? mapped * side : n * side;
+}
+
+void Mesh::set_normal_map(Image image, double scale, std::vector<std::array<double, 4>> tangents) {
+    if (uvs_.empty()) {
+        throw std::invalid_argument("a normal map needs the mesh's texture coordinates, and it has none");
+    }
+    if (image.width <= 0 || image.height <= 0) {
+        throw std::invalid_argument("a normal map needs at least one pixel");
+    }
+    if (!tangents.empty() && tangents.size() != positions_.size()) {
+        throw std::invalid_argument("the mesh has " + std::to_string(tangents.size()) + " tangents for " +
+                                    std::to_string(positions_.size()) +
+                                    " positions (expected one per position, or none)");
+    }
+    const auto usable_tangent = [](const std::array<double, 4>& t) {
+        return usable_normal({t[0], t[1], t[2]}) && std::isfinite(t[3]);
+    };
+    if (tangents.empty() || !std::all_of(tangents.begin(), tangents.end(), usable_tangent)) {
+        tangents = tangents_from_uvs(positions_, normals_, uvs_, triangles_);
+    }
+    tangents_ = std::move(tangents);
+    normal_map_ = std::make_unique<const NormalMap>(NormalMap{std::move(image), scale});
 }
 
 namespace {
@@ -492,11 +609,32 @@ std::unique_ptr<Shape> Mesh::create(Params& params, const BuildContext& context)
     } else {
         data = inline_mesh(params);
     }
+    std::vector<std::array<double, 4>> tangents = std::move(data.tangents);
+    std::unique_ptr<Mesh> mesh;
     try {
-        return std::make_unique<Mesh>(std::move(data));
+        mesh = std::make_unique<Mesh>(std::move(data));
     } catch (const std::invalid_argument& e) {
         params.fail(params.has("file") ? "file" : "positions", what + ": " + e.what());
     }
+    if (const Node* map = params.node("normal_map")) {
+        // {file: n.png, gltf_image: N, scale: 1}: a tangent-space normal map, read as data (linear).
+        if (!map->is_map()) {
+            params.fail("normal_map", "normal_map is a map {file: …, scale: …}");
+        }
+        Params keys(*map, params.what() + ".normal_map");
+        Image image = read_image_keys(keys, context, false);
+        const double scale = keys.number("scale", 1.0);
+        if (!std::isfinite(scale)) {
+            keys.fail("scale", "normal_map.scale must be a finite number");
+        }
+        keys.finish();
+        try {
+            mesh->set_normal_map(std::move(image), scale, std::move(tangents));
+        } catch (const std::invalid_argument& e) {
+            params.fail("normal_map", what + ": " + e.what());
+        }
+    }
+    return mesh;
 }
 
 }  // namespace glint

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <array>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -9,6 +10,7 @@
 #include "glint/geometry/mesh_io/mesh_data.hpp"
 #include "glint/geometry/shape.hpp"
 #include "glint/geometry/triangle_block.hpp"
+#include "glint/image/image.hpp"
 
 namespace glint {
 
@@ -50,6 +52,13 @@ class Mesh final : public Shape {
     double build_seconds() const { return build_seconds_; }
     std::size_t memory_bytes() const;
 
+    // A tangent-space normal map over the mesh's uvs (glTF's normalTexture): each texel (r, g, b) in
+    // [0, 1] is the normal (2r − 1, 2g − 1, 2b − 1) in the frame (tangent, bitangent, normal) at the hit,
+    // x and y multiplied by `scale`. `tangents`, one per vertex, are the mesh data's (glTF's TANGENT,
+    // MeshData::tangents); when empty they are computed from the uvs (tangents_from_uvs in mesh.cpp).
+    // Throws std::invalid_argument if the mesh has no uvs, or tangents not one per vertex.
+    void set_normal_map(Image image, double scale, std::vector<std::array<double, 4>> tangents = {});
+
     // {type: mesh, file: name.obj | name.ply}; the file is found relative to the scene file.
     static std::unique_ptr<Shape> create(Params& params, const BuildContext& context);
 
@@ -59,11 +68,23 @@ class Mesh final : public Shape {
     // is in cache, instead of going through triangles_ and positions_, two more memory round trips).
     void fill_hit(std::uint32_t index, const Vec3& p0, const Vec3& p1, const Vec3& p2, const TriangleHit& at,
                   Hit& hit) const;
+    // The shading normal of a hit on a normal-mapped mesh, once fill_hit has written the rest.
+    void map_normal(std::uint32_t index, const TriangleHit& at, Hit& hit) const;
+
+    struct NormalMap {
+        Image image;   // read linear: texels are data, not colour
+        double scale;  // glTF's normalTexture.scale
+    };
 
     std::vector<Vec3> positions_;
     std::vector<Vec3> normals_;  // empty (flat shading) or one unit (or zero: use the face) per position
     std::vector<Point2> uvs_;    // empty (a hit's uv is its barycentric (b1, b2)) or one per position
     std::vector<std::array<std::uint32_t, 3>> triangles_;
+    // Only with a normal map (set_normal_map): the map, and per vertex a unit tangent and the
+    // handedness w (±1) of the bitangent w · normal × tangent. Null and empty otherwise, so that a mesh
+    // without one pays nothing but a test of the pointer per hit.
+    std::unique_ptr<const NormalMap> normal_map_;
+    std::vector<std::array<double, 4>> tangents_;
     // The leaves' triangles, four to a block, with their vertices copied in: what the hot loop reads.
     // A BVH leaf of n triangles is ⌈n/4⌉ consecutive blocks starting at its `first`.
     std::vector<TriangleBlock, UninitializedAllocator<TriangleBlock>> blocks_;  // filled in parallel

@@ -25,7 +25,7 @@ std::vector<unsigned char> read_image_file(const std::filesystem::path& path);
 Image decode_exr(const unsigned char* data, std::size_t size, const std::string& name);
 
 // Decodes a JPEG file through libjpeg-turbo after checking its declared size (jpeg.cpp).
-Image decode_jpeg(const unsigned char* data, std::size_t size, const std::string& name);
+Image decode_jpeg(const unsigned char* data, std::size_t size, const std::string& name, bool srgb = true);
 
 enum class FileFormat { Png, Jpeg, Bmp, Tga, Pnm, Hdr, Exr, Pfm, Gif, Psd, Pic, Unknown };
 

@@ -72,10 +72,12 @@ Image decode_pfm(const std::vector<unsigned char>& bytes, const std::string& nam
 // PNG, JPEG, BMP, TGA and binary PGM/PPM (8 or 16 bit, sRGB-decoded) and Radiance HDR through stb_image,
 // OpenEXR through tinyexr and PFM (HDR, EXR and PFM already linear). Throws std::runtime_error, whose message
 // names the file, when it is missing, unreadable, of another format, larger than the limits above or
-// shorter than its header says.
-Image read_image(const std::filesystem::path& path);
+// shorter than its header says. With `srgb` false, 8- and 16-bit samples are taken as they are (value /
+// maximum), not sRGB-decoded: for images that hold data rather than colour (normal maps, glTF's
+// metallic-roughness maps).
+Image read_image(const std::filesystem::path& path, bool srgb = true);
 // The same, from a file's bytes already in memory; `name` is the file name used in error messages.
-Image decode_image(const std::vector<unsigned char>& bytes, const std::string& name);
+Image decode_image(const std::vector<unsigned char>& bytes, const std::string& name, bool srgb = true);
 
 // The sRGB transfer function's inverse (IEC 61966-2-1): an encoded value in [0, 1] to linear.
 double srgb_to_linear(double encoded);

@@ -73,7 +73,8 @@ Image from_stb(Sample* pixels, int width, int height, int channels, double to_un
     return image;
 }
 
-Image decode_with_stb(FileFormat format, const std::vector<unsigned char>& bytes, const std::string& name) {
+Image decode_with_stb(FileFormat format, const std::vector<unsigned char>& bytes, const std::string& name,
+                      bool srgb) {
     const StbHeader header = check_stb_header(format, bytes.data(), bytes.size(), name);
     const char* format_text = format_name(format);
     const auto length = static_cast<int>(bytes.size());  // check_stb_header ensured it fits
@@ -101,14 +102,14 @@ Image decode_with_stb(FileFormat format, const std::vector<unsigned char>& bytes
                     pixels[i] = big_endian;
                 }
             }
-            return from_stb(pixels, width, height, header.channels, 1.0 / header.max_value, true, header,
+            return from_stb(pixels, width, height, header.channels, 1.0 / header.max_value, srgb, header,
                             name, format_text);
         }
         stbi_us* pixels = stbi_load_16_from_memory(bytes.data(), length, &width, &height, &file_channels, 3);
-        return from_stb(pixels, width, height, 3, 1.0 / 65535, true, header, name, format_text);
+        return from_stb(pixels, width, height, 3, 1.0 / 65535, srgb, header, name, format_text);
     }
     stbi_uc* pixels = stbi_load_from_memory(bytes.data(), length, &width, &height, &file_channels, 3);
-    return from_stb(pixels, width, height, 3, 1.0 / (pnm ? header.max_value : 255), true, header, name,
+    return from_stb(pixels, width, height, 3, 1.0 / (pnm ? header.max_value : 255), srgb, header, name,
                     format_text);
 }
 
@@ -162,7 +163,7 @@ std::vector<unsigned char> read_image_file(const std::filesystem::path& path) {
 
 }  // namespace image_detail
 
-Image decode_image(const std::vector<unsigned char>& bytes, const std::string& name) {
+Image decode_image(const std::vector<unsigned char>& bytes, const std::string& name, bool srgb) {
     using image_detail::FileFormat;
     const FileFormat format = image_detail::sniff_format(bytes.data(), bytes.size());
     switch (format) {
@@ -171,13 +172,13 @@ Image decode_image(const std::vector<unsigned char>& bytes, const std::string& n
         case FileFormat::Pfm:
             return decode_pfm(bytes, name);
         case FileFormat::Jpeg:
-            return image_detail::decode_jpeg(bytes.data(), bytes.size(), name);
+            return image_detail::decode_jpeg(bytes.data(), bytes.size(), name, srgb);
         case FileFormat::Png:
         case FileFormat::Bmp:
         case FileFormat::Tga:
         case FileFormat::Pnm:
         case FileFormat::Hdr:
-            return image_detail::decode_with_stb(format, bytes, name);
+            return image_detail::decode_with_stb(format, bytes, name, srgb);
         case FileFormat::Gif:
         case FileFormat::Psd:
         case FileFormat::Pic:
@@ -190,8 +191,8 @@ Image decode_image(const std::vector<unsigned char>& bytes, const std::string& n
                              image_detail::kReadableFormats + ")");
 }
 
-Image read_image(const std::filesystem::path& path) {
-    return decode_image(image_detail::read_image_file(path), path.string());
+Image read_image(const std::filesystem::path& path, bool srgb) {
+    return decode_image(image_detail::read_image_file(path), path.string(), srgb);
 }
 
 }  // namespace glint

@@ -142,7 +142,7 @@ void decode_jpeg_pixels(const unsigned char* data, std::size_t size, ErrorManage
 
 }  // namespace
 
-Image decode_jpeg(const unsigned char* data, std::size_t size, const std::string& name) {
+Image decode_jpeg(const unsigned char* data, std::size_t size, const std::string& name, bool srgb) {
     const std::string prefix = name + ": ";
     std::string header_error;
     const auto check_header = [&](long width, long height) {
@@ -202,10 +202,11 @@ Image decode_jpeg(const unsigned char* data, std::size_t size, const std::string
             prefix + (result.header_read ? "cannot decode the JPEG file (" : "not a readable JPEG file (") +
             errors.message + ")");
     }
-    // 8-bit sRGB to linear, once per value.
+    // 8-bit sRGB to linear (or, for data such as normal maps, the plain value), once per value.
     std::array<float, 256> linear{};
     for (int v = 0; v < 256; ++v) {
-        linear[static_cast<std::size_t>(v)] = static_cast<float>(srgb_to_linear(v / 255.0));
+        linear[static_cast<std::size_t>(v)] =
+            static_cast<float>(srgb ? srgb_to_linear(v / 255.0) : v / 255.0);
     }
     Image image(static_cast<int>(result.width), static_cast<int>(result.height));
     const std::size_t stride = rows.cmyk ? 4 : 3;

@@ -1,7 +1,8 @@
 // The glTF importer. Every mesh primitive a node places becomes a glint mesh object that refers back
 // to the file ({type: mesh, file: model.gltf, gltf_mesh: M, gltf_primitive: P}) with the node's world
 // matrix as its transform, so converting a model writes a small YAML next to it rather than copying its
-// geometry into text. Materials become `principled` (glTF's own model), emissive ones `emissive`.
+// geometry into text. Materials become `principled` (glTF's own model), emissive ones `emissive`; a
+// material's normal map becomes its meshes' `normal_map`.
 #include "glint/import/gltf_scene.hpp"
 
 #include <array>
@@ -217,15 +218,23 @@ class GltfImporter {
             }
             if (primitive.material >= 0 &&
                 static_cast<std::size_t>(primitive.material) < model_->materials.size()) {
+                if (auto normal_map = normal_map_of(primitive.material, data, mesh.name, p)) {
+                    object.push_back({"normal_map", std::move(*normal_map)});
+                }
                 object.push_back({"material", material(primitive.material)});
             }
             objects_.push_back(tree::map(std::move(object), at_));
         }
     }
 
-    // An image texture for a glTF texture index, or nothing (with a warning) when its image is not a
-    // file beside the model.
-    std::optional<Node> image_texture(int texture, int tex_coord, const std::string& what) {
+    using Keys = std::vector<std::pair<std::string, Node>>;
+
+    // The keys that name the image of a glTF texture (`file`, and `gltf_image` for one stored in the
+    // model), or nothing when the texture or its image does not exist. `extensions` are the texture
+    // reference's own (KHR_texture_transform is one). What glint leaves out is warned about when `warn_about`
+    // (once per material, not at each of its uses).
+    std::optional<Keys> image_keys(int texture, int tex_coord, const tinygltf::ExtensionMap& extensions,
+                                   const std::string& what, bool warn_about) {
         if (texture < 0 || static_cast<std::size_t>(texture) >= model_->textures.size()) {
             return std::nullopt;
         }
@@ -234,14 +243,15 @@ class GltfImporter {
             return std::nullopt;
         }
         const std::string& uri = model_->images[static_cast<std::size_t>(source)].uri;
-        if (tex_coord != 0) {
+        if (tex_coord != 0 && warn_about) {
             warn(what + " uses TEXCOORD_" + std::to_string(tex_coord) + ": glint reads TEXCOORD_0 only");
         }
+        if (extensions.count("KHR_texture_transform") && warn_about) {
+            warn(what + " has a KHR_texture_transform: glint maps it without the transform");
+        }
         if (uri.empty() || uri.rfind("data:", 0) == 0) {  // stored in the model: decoded from it
-            return tree::map({{"type", tree::text("image", at_)},
-                              {"file", tree::text(path_.filename().generic_string(), at_)},
-                              {"gltf_image", tree::number(source, at_)}},
-                             at_);
+            return Keys{{"file", tree::text(path_.filename().generic_string(), at_)},
+                        {"gltf_image", tree::number(source, at_)}};
         }
         std::string file;  // URIs escape spaces and other characters as %XX
         for (std::size_t i = 0; i < uri.size(); ++i) {
@@ -254,26 +264,72 @@ class GltfImporter {
                 file += uri[i];
             }
         }
-        return tree::map({{"type", tree::text("image", at_)}, {"file", tree::text(file, at_)}}, at_);
+        return Keys{{"file", tree::text(file, at_)}};
+    }
+
+    // An image texture {type: image, file, …} of a glTF texture reference, times `factor` per channel;
+    // `channel` r, g or b for a number stored in one channel, `linear` for data rather than colour.
+    template <class TextureInfo>
+    std::optional<Node> image_texture(const TextureInfo& info, const Rgb& factor, const std::string& what,
+                                      bool warn_about, const std::string& channel = "", bool linear = false) {
+        std::optional<Keys> keys = image_keys(info.index, info.texCoord, info.extensions, what, warn_about);
+        if (!keys) {
+            return std::nullopt;
+        }
+        keys->insert(keys->begin(), {"type", tree::text("image", at_)});
+        if (!channel.empty()) {
+            keys->push_back({"channel", tree::text(channel, at_)});
+        }
+        if (linear) {
+            keys->push_back({"encoding", tree::text("linear", at_)});
+        }
+        if (factor != Rgb(1.0)) {
+            const bool grey = factor.r == factor.g && factor.g == factor.b;
+            keys->push_back({"scale", grey ? tree::number(factor.r, at_) : tree::color(factor, at_)});
+        }
+        return tree::map(std::move(*keys), at_);
+    }
+
+    std::string material_what(int index) const {
+        const tinygltf::Material& m = model_->materials[static_cast<std::size_t>(index)];
+        return "material '" + (m.name.empty() ? std::to_string(index) : m.name) + "'";
+    }
+
+    // The mesh's normal_map {file, gltf_image, scale} for material `index`'s normalTexture: a key of
+    // the mesh, not of the material, since it is the shading normal the mesh gives its hits that the map
+    // changes (docs/importers.md). None when the material has no normal map, or (with a warning) when
+    // the primitive has no TEXCOORD_0 to map it by.
+    std::optional<Node> normal_map_of(int index, const MeshData& data, const std::string& mesh_name,
+                                      std::size_t primitive) {
+        const tinygltf::NormalTextureInfo& info =
+            model_->materials[static_cast<std::size_t>(index)].normalTexture;
+        const bool first_use = warned_normal_maps_.insert(index).second;
+        std::optional<Keys> keys = image_keys(info.index, info.texCoord, info.extensions,
+                                              material_what(index) + "'s normal map", first_use);
+        if (!keys) {
+            return std::nullopt;
+        }
+        if (data.uvs.empty()) {
+            warn("mesh '" + mesh_name + "' primitive " + std::to_string(primitive) +
+                 " has no TEXCOORD_0: the normal map of its " + material_what(index) + " is left out");
+            return std::nullopt;
+        }
+        keys->push_back({"scale", tree::number(info.scale, at_)});
+        return tree::map(std::move(*keys), at_);
     }
 
     Node material(int index) {
         const tinygltf::Material& m = model_->materials[static_cast<std::size_t>(index)];
-        const std::string what = "material '" + (m.name.empty() ? std::to_string(index) : m.name) + "'";
-        if (!warned_materials_.insert(index).second) {
-            // Warnings once per material; the node is built again for each use.
-        } else {
-            if (m.normalTexture.index >= 0) {
-                warn(what + ": its normal map is not read by glint");
-            }
+        const std::string what = material_what(index);
+        const bool first_use = warned_materials_.insert(index).second;  // warnings once per material
+        if (first_use) {
             if (m.occlusionTexture.index >= 0) {
-                warn(what + ": its occlusion map is not read by glint (a path tracer computes occlusion)");
+                warn(what +
+                     ": its occlusion map is ignored (baked ambient occlusion: glint's path tracer computes "
+                     "occlusion itself, and would darken twice)");
             }
             if (m.alphaMode != "OPAQUE") {
                 warn(what + ": alphaMode " + m.alphaMode + " is rendered opaque");
-            }
-            if (m.pbrMetallicRoughness.metallicRoughnessTexture.index >= 0) {
-                warn(what + ": its metallic-roughness map is not read by glint (the factors are used)");
             }
             for (const auto& [name, value] : m.extensions) {
                 if (name != "KHR_materials_emissive_strength") {
@@ -294,37 +350,40 @@ class GltfImporter {
                 warn(what + " emits: glint renders it as an emissive surface, without its base colour");
             }
             Node radiance = tree::color(emission, at_);
-            if (auto texture = image_texture(m.emissiveTexture.index, m.emissiveTexture.texCoord,
-                                             what + "'s emissive map")) {
-                if (emission.r != 1 || emission.g != 1 || emission.b != 1) {
-                    // The map times the factor: the emissive material's `scale` is one number.
-                    const double scale = std::max({emission.r, emission.g, emission.b});
-                    return tree::map({{"type", tree::text("emissive", at_)},
-                                      {"radiance", std::move(*texture)},
-                                      {"scale", tree::number(scale, at_)}},
-                                     at_);
-                }
-                radiance = std::move(*texture);
+            if (auto texture =
+                    image_texture(m.emissiveTexture, emission, what + "'s emissive map", first_use)) {
+                radiance = std::move(*texture);  // the map times the factor (and the strength)
             }
             return tree::map({{"type", tree::text("emissive", at_)}, {"radiance", std::move(radiance)}}, at_);
         }
         const auto& pbr = m.pbrMetallicRoughness;
+        const auto unit = [](double v) { return std::clamp(v, 0.0, 1.0); };
         const Rgb factor = rgb_of(pbr.baseColorFactor, {1, 1, 1});
-        Node base = tree::color(
-            {std::clamp(factor.r, 0.0, 1.0), std::clamp(factor.g, 0.0, 1.0), std::clamp(factor.b, 0.0, 1.0)},
-            at_);
-        if (auto texture = image_texture(pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord,
-                                         what + "'s base colour map")) {
-            if (factor.r != 1 || factor.g != 1 || factor.b != 1) {
-                warn(what +
-                     ": the base colour map is used without its factor (glint does not multiply them)");
-            }
+        const Rgb base_factor{unit(factor.r), unit(factor.g), unit(factor.b)};
+        Node base = tree::color(base_factor, at_);
+        if (auto texture =
+                image_texture(pbr.baseColorTexture, base_factor, what + "'s base colour map", first_use)) {
             base = std::move(*texture);
+        }
+        // glTF's metallic-roughness map: metallic in its blue channel, roughness in its green, linear,
+        // each times its factor.
+        const double metallic_factor = unit(pbr.metallicFactor), roughness_factor = unit(pbr.roughnessFactor);
+        Node metallic = tree::number(metallic_factor, at_);
+        Node roughness = tree::number(roughness_factor, at_);
+        const std::string map_what = what + "'s metallic-roughness map";
+        if (auto texture = image_texture(pbr.metallicRoughnessTexture, Rgb(metallic_factor), map_what,
+                                         first_use, "b", true)) {
+            metallic = std::move(*texture);
+        }
+        // The same texture reference again: its warnings were given just above.
+        if (auto texture = image_texture(pbr.metallicRoughnessTexture, Rgb(roughness_factor), map_what, false,
+                                         "g", true)) {
+            roughness = std::move(*texture);
         }
         return tree::map({{"type", tree::text("principled", at_)},
                           {"base_color", std::move(base)},
-                          {"metallic", tree::number(std::clamp(pbr.metallicFactor, 0.0, 1.0), at_)},
-                          {"roughness", tree::number(std::clamp(pbr.roughnessFactor, 0.0, 1.0), at_)}},
+                          {"metallic", std::move(metallic)},
+                          {"roughness", std::move(roughness)}},
                          at_);
     }
 
@@ -416,7 +475,7 @@ class GltfImporter {
     std::optional<Node> camera_;
     Bounds3 bounds_;
     bool emits_ = false;
-    std::set<int> warned_materials_, warned_emitters_, skin_warned_;
+    std::set<int> warned_materials_, warned_emitters_, warned_normal_maps_, skin_warned_;
 };
 
 }  // namespace

@@ -1,7 +1,8 @@
 // Principled {type: principled, base_color, metallic, roughness, ior, specular}:
 //   base_color  colour or texture in [0, 1], default 0.8: the base's albedo, and the metal's F₀;
-//   metallic    number or texture in [0, 1], default 0 (a texture's value is the mean of its channels);
-//   roughness   number or texture in [0, 1], default 0.5; α = roughness², as glTF;
+//   metallic    number or texture in [0, 1], default 0 (a texture's value is the mean of its channels,
+//               so an image texture with `channel: b` reads glTF's metallic-roughness map);
+//   roughness   number or texture in [0, 1], default 0.5; α = roughness², as glTF (its map: `channel: g`);
 //   ior         refractive index of the dielectric layer, [1, 10], default 1.5 (glTF's);
 //   specular    scale of the dielectric's specular reflection, [0, 1], default 1 (KHR_materials_specular).
 #include "glint/material/principled.hpp"

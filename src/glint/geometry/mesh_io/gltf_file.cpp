@@ -4,11 +4,15 @@
 #include "glint/geometry/mesh_io/gltf_file.hpp"
 
 #include "glint/geometry/mesh_io/tinygltf.hpp"
+#include "glint/image/image_io.hpp"
+#include "glint/params/build_context.hpp"
+#include "glint/params/params.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <limits>
 #include <mutex>
 
 namespace glint {
@@ -305,6 +309,15 @@ MeshData gltf_primitive_mesh(const GltfFile& file, int mesh_index, int primitive
             }
         }
     }
+    if (attribute("TANGENT") >= 0) {
+        const AccessorView tangents = view_of(file, attribute("TANGENT"), TINYGLTF_TYPE_VEC4, "TANGENT", pos);
+        if (tangents.count == positions.count) {
+            for (std::size_t i = 0; i < tangents.count; ++i) {
+                data.tangents.push_back({component(tangents, i, 0), component(tangents, i, 1),
+                                         component(tangents, i, 2), component(tangents, i, 3)});
+            }
+        }
+    }
     // The corners: the indices, or the vertices in order.
     std::vector<std::uint32_t> corners;
     if (primitive.indices >= 0) {
@@ -374,6 +387,36 @@ const std::vector<unsigned char>& gltf_image_bytes(const GltfFile& file, int ima
                  (stored.uri.empty() ? std::string() : " (it is the file '" + stored.uri + "')"));
     }
     return stored.image;
+}
+
+Image read_image_keys(Params& params, const BuildContext& context, bool srgb) {
+    const std::string file = params.string("file");
+    const std::filesystem::path path = context.resolve(file);
+    Image image;
+    try {
+        if (params.has("gltf_image")) {
+            // An image stored inside a glTF model: its encoded bytes, decoded by the same reader.
+            const std::int64_t index = params.integer("gltf_image");
+            if (index < 0 || index > std::numeric_limits<int>::max()) {
+                params.fail("gltf_image", "gltf_image must be a whole number ≥ 0");
+            }
+            const auto model = load_gltf_file(path, params.pos_of("file"));
+            image =
+                decode_image(gltf_image_bytes(*model, static_cast<int>(index), params.pos_of("gltf_image")),
+                             path.string() + " image " + std::to_string(index), srgb);
+        } else {
+            image = read_image(path, srgb);
+        }
+    } catch (const SceneError&) {
+        throw;
+    } catch (const std::exception& e) {
+        // The reader's message starts with the file's path.
+        params.fail("file", std::string("cannot read texture image: ") + e.what());
+    }
+    if (image.width <= 0 || image.height <= 0) {
+        params.fail("file", "texture image '" + path.string() + "' has no pixels");
+    }
+    return image;
 }
 
 }  // namespace glint

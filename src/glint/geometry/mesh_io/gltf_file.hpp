@@ -9,12 +9,16 @@
 #include <string>
 
 #include "glint/geometry/mesh_io/mesh_data.hpp"
+#include "glint/image/image.hpp"
 
 namespace tinygltf {
 class Model;
 }
 
 namespace glint {
+
+class Params;
+struct BuildContext;
 
 struct GltfFile {
     std::string path;
@@ -49,5 +53,11 @@ MeshData gltf_primitive_mesh(const GltfFile& file, int mesh, int primitive, cons
 // URI); a SceneError at `mentioned_at` when it has no such image or the image is a file of its own.
 const std::vector<unsigned char>& gltf_image_bytes(const GltfFile& file, int image,
                                                    const SourcePos& mentioned_at);
+
+// The image a scene map names by its keys `file` (an image file, resolved against the scene file's
+// folder) and, with a .gltf or .glb `file`, `gltf_image: N` (the model's image N stored inside it): what
+// image textures and normal maps read. `srgb` as read_image's. A missing, unreadable, oversized or empty
+// image is a SceneError at `file` (or at `gltf_image`).
+Image read_image_keys(Params& params, const BuildContext& context, bool srgb);
 
 }  // namespace glint

@@ -17,6 +17,10 @@ struct MeshData {
     std::vector<Vec3> positions;
     std::vector<Vec3> normals;  // empty, or one per position (possibly zero or NaN: the mesh fixes them)
     std::vector<Point2> uvs;    // empty, or one texture coordinate per position (v from the bottom up)
+    // Empty, or one per position: x y z a tangent along increasing u, w ±1 the handedness, the
+    // bitangent (along increasing v) being w · normal × tangent (glTF's TANGENT). Read only by meshes
+    // with a normal map; the mesh computes them from the uvs when absent.
+    std::vector<std::array<double, 4>> tangents;
     std::vector<std::array<std::uint32_t, 3>> triangles;  // indices into positions, counter-clockwise
 };
 
