@@ -693,6 +693,36 @@ def gltf_seeds():
            struct.pack("<I", len(text)) + b"JSON" + text + struct.pack("<I", len(binary)) + b"BIN\0" + binary)
     write("corpus/gltf/square.glb", glb)
 
+    # The same square with uvs, normals and tangents, and a material with every map glTF's
+    # metallic-roughness model has: base colour, metallic-roughness, normal (scaled), emissive, occlusion.
+    mapped = (geometry + struct.pack("<8f", 0, 0, 1, 0, 1, 1, 0, 1) + struct.pack("<12f", *([0, 0, 1] * 4)) +
+              struct.pack("<16f", *([1, 0, 0, 1] * 4)))
+    tiny_png = "data:image/png;base64," + base64.b64encode(png(2, 2, 2, 8, lambda x, y: [128, 128 + 100 * x, 255])).decode()
+    maps = {
+        "asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "TEXCOORD_0": 2, "NORMAL": 3, "TANGENT": 4},
+                                    "indices": 1, "material": 0}]}],
+        "materials": [{"name": "mapped",
+                       "pbrMetallicRoughness": {"baseColorTexture": {"index": 0}, "metallicFactor": 0.5,
+                                                "metallicRoughnessTexture": {"index": 0}},
+                       "normalTexture": {"index": 0, "scale": 0.5}, "occlusionTexture": {"index": 0},
+                       "emissiveTexture": {"index": 0}, "emissiveFactor": [0.1, 0.2, 0.3]}],
+        "textures": [{"source": 0}], "images": [{"uri": tiny_png}],
+        "buffers": [{"byteLength": len(mapped),
+                     "uri": "data:application/octet-stream;base64," + base64.b64encode(mapped).decode()}],
+        "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 48},
+                        {"buffer": 0, "byteOffset": 48, "byteLength": 12},
+                        {"buffer": 0, "byteOffset": 60, "byteLength": 32},
+                        {"buffer": 0, "byteOffset": 92, "byteLength": 48},
+                        {"buffer": 0, "byteOffset": 140, "byteLength": 64}],
+        "accessors": [{"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3",
+                       "min": [0, 0, 0], "max": [1, 1, 0]},
+                      {"bufferView": 1, "componentType": 5123, "count": 6, "type": "SCALAR"},
+                      {"bufferView": 2, "componentType": 5126, "count": 4, "type": "VEC2"},
+                      {"bufferView": 3, "componentType": 5126, "count": 4, "type": "VEC3"},
+                      {"bufferView": 4, "componentType": 5126, "count": 4, "type": "VEC4"}]}
+    write("corpus/gltf/square-with-every-map.gltf", json.dumps(maps))
+
 
 def pbrt_seeds():
     """Small pbrt-v4 scenes: every directive family the importer reads, and the files it names are the
