@@ -32,6 +32,7 @@
 #include "glint/scene/scene_checks.hpp"
 #include "glint/scene/scene_desc.hpp"
 #include "glint/scene/scene_set.hpp"
+#include "mpi_render.hpp"
 #include "render_setup.hpp"
 #include "tile_parts.hpp"
 
@@ -363,6 +364,18 @@ static int run(int argc, char** argv) {
         return command_line_error(app, argc, argv, e);
     }
     if (render->parsed()) {
+        if (glint::cli::launched_by_mpi()) {
+#ifdef GLINT_HAVE_MPI
+            return glint::cli::run_mpi_render(options);
+#else
+            if (glint::cli::launched_ranks() > 1) {
+                return bad_input(
+                    "started by an MPI launcher with " + std::to_string(glint::cli::launched_ranks()) +
+                    " processes, but this glint was built without MPI (libopenmpi-dev was not found "
+                    "when it was configured): each process would render the whole image");
+            }
+#endif
+        }
         return run_render(options);
     }
     return 0;

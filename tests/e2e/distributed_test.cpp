@@ -4,6 +4,7 @@
 // (docs/distributed.md).
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cstdlib>
 #include <fstream>
 #include <iterator>
@@ -148,6 +149,107 @@ TEST(TileParts, TheTileFlagIsChecked) {
         EXPECT_FALSE(std::filesystem::exists(dir / name));
     }
 }
+
+#ifdef GLINT_MPIEXEC
+// mpirun with what the tests need: CI runs as root, which OpenMPI refuses unless told twice; the ranks
+// share this machine's cores (--oversubscribe: 3 ranks on 2 cores). Under the sanitize preset, OpenMPI's
+// own allocations that it never frees would trip LeakSanitizer in every rank at exit (they are MPI's,
+// not glint's: glint's own leaks are caught by every other test, which runs without MPI), so leak
+// detection is off for these runs only; ASan's and UBSan's other checks stay on.
+// `before` goes between the environment and mpirun (a `timeout`).
+std::string mpirun(int ranks, const std::string& before = "") {
+    return "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 "
+           "ASAN_OPTIONS=\"${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0\" " +
+           before + "'" GLINT_MPIEXEC "' --oversubscribe -np " + std::to_string(ranks) + " ";
+}
+const std::string kGlint = std::string("'") + GLINT_CLI_PATH + "'";
+
+TEST(MpiRender, ThreeRanksGiveTheBitsOfOneProcess) {
+    test::TempDir dir;
+    for (const char* extension : {".pfm", ".exr"}) {
+        const auto whole = test::run_glint("render '" + kScene + "'" + kSize + "-o " +
+                                           quoted(dir / ("whole" + std::string(extension))));
+        ASSERT_EQ(whole.exit_code, 0) << whole.output;
+        const auto ranks = dir / ("ranks" + std::string(extension));
+        const auto r = test::run_command(mpirun(3) + kGlint + " render '" + kScene + "'" + kSize + "-o " +
+                                         quoted(ranks));
+        ASSERT_EQ(r.exit_code, 0) << r.output;
+        EXPECT_TRUE(file_bytes(ranks) == file_bytes(dir / ("whole" + std::string(extension)))) << extension;
+    }
+    // A crop window is cut into bands the same way.
+    const std::string crop = "--crop 5,7,50,40 -o ";
+    ASSERT_EQ(test::run_glint("render '" + kScene + "'" + kSize + crop + quoted(dir / "crop.pfm")).exit_code,
+              0);
+    const auto r = test::run_command(mpirun(2) + kGlint + " render '" + kScene + "'" + kSize + crop +
+                                     quoted(dir / "ranks-crop.pfm"));
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_TRUE(file_bytes(dir / "ranks-crop.pfm") == file_bytes(dir / "crop.pfm"));
+}
+
+// How many times `text` occurs in `output`.
+size_t occurrences(const std::string& output, const std::string& text) {
+    size_t count = 0;
+    for (size_t at = output.find(text); at != std::string::npos; at = output.find(text, at + 1)) {
+        ++count;
+    }
+    return count;
+}
+
+TEST(MpiRender, ABadSceneFailsOnceWithItsPosition) {
+    test::TempDir dir;
+    const auto scene = dir.write("bad.yaml", "render: {samplse: 4}\n");
+    const auto out = dir / "out.pfm";
+    const auto r = test::run_command(mpirun(3) + kGlint + " render " + quoted(scene) + " -o " + quoted(out));
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+    // Every rank finds the mistake; rank 0 alone says it.
+    EXPECT_EQ(occurrences(r.output, "bad.yaml:1:10: error: unknown key 'samplse'"), 1u) << r.output;
+    EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+TEST(MpiRender, ARankWithAnotherSceneIsRefused) {
+    test::TempDir dir;
+    const auto out = dir / "out.pfm";
+    // Rank 2 is given another field of view, as a host with another copy of the scene file would be.
+    const auto r = test::run_command(
+        mpirun(3) +
+        "sh -c 'if [ \"$OMPI_COMM_WORLD_RANK\" = 2 ]; then exec \"$0\" \"$@\" --set camera.fov=30; "
+        "else exec \"$0\" \"$@\"; fi' " +
+        kGlint + " render '" + kScene + "'" + kSize + "-o " + quoted(out));
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+    EXPECT_NE(r.output.find("rank 2 on "), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("built another scene than rank 0"), std::string::npos) << r.output;
+    EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+TEST(MpiRender, ARankThatDiesFailsTheRunWithoutHanging) {
+    test::TempDir dir;
+    const auto out = dir / "out.pfm";
+    // Rank 2 is killed a second into a render of several seconds; the others are waiting for its band
+    // or about to hand it another. `timeout` turns a hang into a failure of this test.
+    const auto start = std::chrono::steady_clock::now();
+    const auto r = test::run_command(
+        mpirun(3, "timeout 120 ") +
+        "sh -c 'if [ \"$OMPI_COMM_WORLD_RANK\" = 2 ]; then \"$0\" \"$@\" & sleep 1; kill -KILL $!; exit 137; "
+        "else exec \"$0\" \"$@\"; fi' " +
+        kGlint + " render '" + kScene + "' --width 320 --height 180 --spp 64 --quiet -o " + quoted(out));
+    // mpirun exits with the status of the first rank to fail: that of the killed one (timeout's 124 would
+    // be a hang).
+    EXPECT_EQ(r.exit_code, 137) << r.output;
+    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(60)) << r.output;
+    EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+TEST(MpiRender, TileAndTimeLimitAreRefusedUnderMpirun) {
+    test::TempDir dir;
+    for (const std::string& flags :
+         {"--tile 0/2 -o " + quoted(dir / "p.exr"), "--time-limit 5 -o " + quoted(dir / "p.exr")}) {
+        const auto r = test::run_command(mpirun(2) + kGlint + " render '" + kScene + "'" + kSize + flags);
+        EXPECT_EQ(r.exit_code, 2) << r.output;
+        EXPECT_EQ(occurrences(r.output, "under mpirun"), 1u) << r.output;
+        EXPECT_FALSE(std::filesystem::exists(dir / "p.exr"));
+    }
+}
+#endif
 
 }  // namespace
 }  // namespace glint
