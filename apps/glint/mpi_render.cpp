@@ -253,7 +253,20 @@ Image gather_bands(PreparedRender& prepared, const PixelWindow& window, int band
     for (int r = 1; r < ranks; ++r) {
         working += next_for(r) ? 1 : 0;
     }
-    ProgressBar bar(progress);
+    // Progress as a line every tenth: under mpirun the ranks' stderr is a pipe to mpirun, whose own
+    // terminal (if any) they cannot see, and a batch job's log reads lines better than a redrawn bar.
+    int tenths_said = 0;
+    const auto report_progress = [&] {
+        const double fraction = static_cast<double>(rows_done) / window.height();
+        const int tenths = static_cast<int>(fraction * 10);
+        if (progress && tenths > tenths_said && tenths < 10) {
+            tenths_said = tenths;
+            const double elapsed =
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            std::fprintf(stderr, "glint: %d0%% of the image, %.1f s, about %.1f s left\n", tenths, elapsed,
+                         elapsed * (1 - fraction) / fraction);
+        }
+    };
     while (working > 0 || !local_finished) {
         if (local_finished && local_failure) {
             local.join();
@@ -269,7 +282,7 @@ Image gather_bands(PreparedRender& prepared, const PixelWindow& window, int band
         if (!arrived) {
             // Sleeping, not spinning: rank 0's render thread (and perhaps other ranks) need the cores.
             std::this_thread::sleep_for(std::chrono::milliseconds(1));
-            bar.update(static_cast<double>(rows_done) / window.height());
+            report_progress();
             continue;
         }
         const int source = status.MPI_SOURCE;
@@ -292,7 +305,6 @@ Image gather_bands(PreparedRender& prepared, const PixelWindow& window, int band
         working -= next_for(source) ? 0 : 1;
     }
     local.join();
-    bar.finish();
 
     // The statistics, merged in band order: the first non-finite sample is that of the first band
     // that has one.
@@ -392,8 +404,7 @@ int run_mpi_render(const RenderOptions& options) {
         RenderStats stats;
         Image image;
         try {
-            image = gather_bands(prepared, window, bands, ranks, !options.quiet && ::isatty(STDERR_FILENO),
-                                 stats);
+            image = gather_bands(prepared, window, bands, ranks, !options.quiet, stats);
         } catch (const std::exception& e) {
             abort_job(0, e.what());
         }
