@@ -79,6 +79,25 @@ TEST(TileParts, MergedPartsAreBitForBitTheWholeRender) {
     EXPECT_EQ(part.attributes.at("glintSpp"), "8");
 }
 
+TEST(TileParts, AMergeIntoPngUsesTheExposureAndToneCurveThePartsRecord) {
+    test::TempDir dir;
+    const std::string display = kSize + "--exposure 1.5 --tonemap aces ";
+    ASSERT_EQ(
+        test::run_glint("render '" + kScene + "'" + display + "-o " + quoted(dir / "whole.png")).exit_code,
+        0);
+    std::string parts;
+    for (int i = 0; i < 3; ++i) {
+        const auto part = dir / ("part-" + std::to_string(i) + ".exr");
+        const auto r = test::run_glint("render '" + kScene + "'" + display + "--tile " + std::to_string(i) +
+                                       "/3 -o " + quoted(part));
+        ASSERT_EQ(r.exit_code, 0) << r.output;
+        parts += quoted(part) + " ";
+    }
+    const auto r = test::run_glint("merge " + parts + "-o " + quoted(dir / "merged.png"));
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_TRUE(file_bytes(dir / "merged.png") == file_bytes(dir / "whole.png"));
+}
+
 // The merge's refusal: exit 2, a message holding each of `expected`, no output file.
 void expect_refused(const std::string& parts, const test::TempDir& dir,
                     const std::vector<std::string>& expected) {
