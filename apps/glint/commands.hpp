@@ -16,6 +16,8 @@ void add_serve_command(CLI::App& app);
 void add_info_command(CLI::App& app);
 // `glint convert FILE -o scene.yaml`: another tool's scene as a glint YAML file (convert_command.cpp).
 void add_convert_command(CLI::App& app);
+// `glint merge PART... -o IMAGE`: the parts of `glint render --tile I/N` as one image (merge_command.cpp).
+void add_merge_command(CLI::App& app);
 
 // Prints what an importer approximated or left out, one positioned warning each, to stderr.
 inline void print_warnings(const glint::SceneDesc& desc) {

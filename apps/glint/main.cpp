@@ -32,10 +32,12 @@
 #include "glint/scene/scene_checks.hpp"
 #include "glint/scene/scene_desc.hpp"
 #include "glint/scene/scene_set.hpp"
+#include "mpi_render.hpp"
+#include "render_setup.hpp"
+#include "tile_parts.hpp"
 
 namespace {
 
-constexpr int kExitBadInput = 2;
 constexpr int kExitInterrupted = 128 + SIGINT;
 
 // Ctrl-C during a render: the first asks the render to stop after its current pass (and the image so
@@ -71,105 +73,85 @@ void install_stop_handlers() {
     ::sigaction(SIGTERM, &action, nullptr);
 }
 
-// A progress bar on stderr: percentage, elapsed time and an estimate of the time left.
-class ProgressBar {
-  public:
-    explicit ProgressBar(bool enabled) : enabled_(enabled), start_(std::chrono::steady_clock::now()) {}
-
-    void update(double fraction) {
-        if (!enabled_) {
-            return;
-        }
-        const auto now = std::chrono::steady_clock::now();
-        if (fraction < 1.0 && now - last_draw_ < std::chrono::milliseconds(100)) {
-            return;
-        }
-        last_draw_ = now;
-        const double elapsed = std::chrono::duration<double>(now - start_).count();
-        constexpr int kWidth = 30;
-        const int filled = static_cast<int>(fraction * kWidth);
-        std::string bar(static_cast<size_t>(filled), '#');
-        bar.resize(kWidth, '.');
-        char eta[32] = "--";
-        if (fraction > 0.01) {
-            std::snprintf(eta, sizeof(eta), "%.1fs", elapsed * (1 - fraction) / fraction);
-        }
-        std::fprintf(stderr, "\r[%s] %5.1f%%  elapsed %.1fs  ETA %s   ", bar.c_str(), 100 * fraction, elapsed,
-                     eta);
-        std::fflush(stderr);
-    }
-    void finish() {
-        if (enabled_) {
-            std::fprintf(stderr, "\r%*s\r", 70, "");
-        }
-    }
-
-  private:
-    bool enabled_;
-    std::chrono::steady_clock::time_point start_;
-    std::chrono::steady_clock::time_point last_draw_{};
-};
-
-struct RenderOptions {
-    std::string scene_path;
-    std::string output;
-    glint::RenderFlags flags;
-    std::optional<int> threads;     // not a scene key: it does not change the image
-    std::vector<std::string> sets;  // --set key.path=value, in order
-    bool quiet = false;
-    glint::ImportOptions import;  // for scenes of other tools (glint/import)
-    double time_limit = 0;        // seconds; 0: none
-};
+using glint::cli::kExitBadInput;
+using glint::cli::ProgressBar;
+using glint::cli::RenderOptions;
 
 int bad_input(const std::string& message) {
     std::cerr << "glint: error: " << message << '\n';
     return kExitBadInput;
 }
 
+// --tile I/N: the checks before the render (the part's own, then what a part cannot be combined with).
+// Returns the exit code of a refusal, or 0.
+int check_tile_options(const RenderOptions& options, const std::filesystem::path& output,
+                       std::optional<glint::cli::TileSpec>& tile) {
+    if (!options.tile) {
+        return 0;
+    }
+    std::string error;
+    tile = glint::cli::parse_tile(*options.tile, error);
+    if (!tile) {
+        return bad_input("--tile " + *options.tile + ": " + error);
+    }
+    if (glint::image_format_for(output) != glint::ImageFormat::Exr) {
+        return bad_input(
+            "--tile writes a part for glint merge, which must be an OpenEXR file (.exr): it "
+            "keeps the float values exactly and records the part's place and scene; " +
+            output.string() + " is not");
+    }
+    if (options.flags.crop) {
+        return bad_input("--tile and --crop cannot be combined: a part is a band of the whole image");
+    }
+    if (options.time_limit > 0) {
+        return bad_input(
+            "--tile and --time-limit cannot be combined: the parts of one image must all "
+            "take every sample");
+    }
+    return 0;
+}
+
 int run_render(const RenderOptions& options) {
     // Check the output path before spending time on the render.
-    std::filesystem::path output = options.output;
-    if (output.empty()) {
-        output = options.scene_path.empty()
-                     ? "default.png"
-                     : std::filesystem::path(options.scene_path).stem().string() + ".png";
-    }
+    const std::filesystem::path output = glint::cli::render_output_path(options);
     try {
         glint::check_output_path(output);
     } catch (const glint::ImageWriteError& e) {
         return bad_input(e.what());
     }
+    std::optional<glint::cli::TileSpec> tile;
+    if (const int refused = check_tile_options(options, output, tile); refused != 0) {
+        return refused;
+    }
 
     install_stop_handlers();
-    glint::Scene scene;
+    glint::cli::PreparedRender prepared;
     try {
-        glint::SceneDesc desc = options.scene_path.empty()
-                                    ? glint::default_scene()
-                                    : glint::load_scene(options.scene_path, options.import);
-        print_warnings(desc);
-        // The flags are short forms of --set: each is an edit of the scene's tree, checked by the
-        // builder like the file; the --set edits follow them, in order.
-        glint::apply_flags(desc, options.flags);
-        for (const std::string& set : options.sets) {
-            glint::apply_set(desc, set);
-        }
-        scene = glint::build_scene(desc);
-        for (const std::string& warning : glint::scene_warnings(scene)) {
-            std::cerr << "glint: warning: " << warning << '\n';
-        }
-        if (options.threads) {
-            scene.view.settings.threads = *options.threads;
-        }
+        prepared = glint::cli::prepare_render(options, true);
     } catch (const glint::SceneError& e) {
         std::cerr << e.what() << '\n';
         return kExitBadInput;
+    }
+    glint::Scene& scene = prepared.scene;
+    glint::RenderSettings& settings = scene.view.settings;
+    if (tile) {
+        if (settings.crop) {
+            return bad_input(
+                "--tile cannot be combined with render.crop: a part is a band of the whole image");
+        }
+        if (tile->count > settings.height) {
+            return bad_input("--tile " + *options.tile + ": the image has only " +
+                             std::to_string(settings.height) + " rows, fewer than " +
+                             std::to_string(tile->count) + " parts");
+        }
+        settings.crop = glint::cli::band_of(tile->index, tile->count, settings.width, settings.height);
     }
     if (g_stop_after_pass.load()) {
         std::cerr << "glint: interrupted before rendering; no image written\n";
         return kExitInterrupted;
     }
 
-    glint::Film film(scene.view.settings.width, scene.view.settings.height);
+    glint::Film film(settings.width, settings.height);
     ProgressBar bar(!options.quiet && ::isatty(STDERR_FILENO));
     glint::RenderCallbacks callbacks;
     callbacks.progress = [&bar](double fraction) { bar.update(fraction); };
@@ -178,29 +160,32 @@ int run_render(const RenderOptions& options) {
     const glint::RenderStats stats = glint::render(scene, film, callbacks);
     bar.finish();
 
-    if (stats.nonfinite_samples > 0) {
-        std::fprintf(stderr,
-                     "glint: warning: %llu samples were NaN or infinite and were left out of the image "
-                     "(first at pixel (%d, %d), sample %u)\n",
-                     static_cast<unsigned long long>(stats.nonfinite_samples), stats.first_nonfinite_x,
-                     stats.first_nonfinite_y, stats.first_nonfinite_sample);
-    }
-    glint::Image image = film.to_image();
-    if (const auto& crop = scene.view.settings.crop) {  // only the window was rendered: write it alone
-        glint::Image window(crop->width(), crop->height());
-        for (int y = 0; y < crop->height(); ++y) {
-            const float* from = image.pixel(crop->x0, crop->y0 + y);
-            std::copy(from, from + 3 * crop->width(), window.pixel(0, y));
-        }
-        image = std::move(window);
-    }
+    glint::cli::print_nonfinite_warning(stats);
+    // Only the window was rendered (a crop or a part): it is written alone.
+    const glint::Image image =
+        settings.crop ? glint::cli::film_window(film, *settings.crop) : film.to_image();
     if (glint::all_black(image) && !stats.cancelled) {
         std::fprintf(stderr,
-                     "glint: warning: every pixel of the image is black (no light reaches the camera: "
-                     "check the lights, the camera's direction and the integrator)\n");
+                     "glint: warning: every %s is black (no light reaches the camera: "
+                     "check the lights, the camera's direction and the integrator)\n",
+                     tile ? "pixel of this part" : "pixel of the image");
     }
     try {
-        glint::write_image(image, output, scene.view.settings.display);
+        if (tile) {
+            glint::cli::PartInfo part;
+            part.version = GLINT_VERSION;
+            part.tile = *tile;
+            part.window = *settings.crop;
+            part.width = settings.width;
+            part.height = settings.height;
+            part.seed = settings.seed;
+            part.samples_per_pixel = stats.samples_per_pixel;
+            part.scene_hash = prepared.scene_hash;
+            part.display = settings.display;
+            glint::write_file_atomically(output, glint::encode_exr(image, glint::cli::part_attributes(part)));
+        } else {
+            glint::write_image(image, output, settings.display);
+        }
     } catch (const glint::ImageWriteError& e) {
         std::cerr << "glint: error: " << e.what() << '\n';
         return 1;
@@ -208,20 +193,23 @@ int run_render(const RenderOptions& options) {
     if (stats.cancelled) {
         // Each pixel is the mean of the samples it has: an unfinished render, not a darker one.
         std::fprintf(stderr, "glint: interrupted: wrote %s with %u of %u samples per pixel\n",
-                     output.string().c_str(), stats.samples_per_pixel, scene.view.settings.samples_per_pixel);
+                     output.string().c_str(), stats.samples_per_pixel, settings.samples_per_pixel);
         return kExitInterrupted;
     }
     if (stats.time_limit_reached) {
         // Not an error: the image is what the time allowed, every pixel with the same samples.
         std::fprintf(stderr, "glint: time limit of %g s reached: %s has %u of %u samples per pixel\n",
                      options.time_limit, output.string().c_str(), stats.samples_per_pixel,
-                     scene.view.settings.samples_per_pixel);
+                     settings.samples_per_pixel);
     }
     if (!options.quiet) {
-        std::fprintf(stderr, "glint: %dx%d, %u spp, %.2f s, %.2f M rays, %.2f Mrays/s -> %s\n",
-                     scene.view.settings.width, scene.view.settings.height, stats.samples_per_pixel,
-                     stats.seconds, stats.rays.total() * 1e-6, stats.mrays_per_second(),
-                     output.string().c_str());
+        const std::string part = tile ? " part " + *options.tile + " (rows " +
+                                            std::to_string(settings.crop->y0) + "-" +
+                                            std::to_string(settings.crop->y1 - 1) + ")"
+                                      : "";
+        std::fprintf(stderr, "glint: %dx%d%s, %u spp, %.2f s, %.2f M rays, %.2f Mrays/s -> %s\n",
+                     settings.width, settings.height, part.c_str(), stats.samples_per_pixel, stats.seconds,
+                     stats.rays.total() * 1e-6, stats.mrays_per_second(), output.string().c_str());
     }
     return 0;
 }
@@ -342,6 +330,9 @@ static int run(int argc, char** argv) {
     render->add_option("--crop", options.flags.crop,
                        "Render only the pixels x0 <= x < x1, y0 <= y < y1, written as an image of that size: "
                        "x0,y0,x1,y1 (the same bits as that window of the full render)");
+    render->add_option("--tile", options.tile,
+                       "Render only part I of N (numbered from 0), a band of rows, into an .exr file that "
+                       "glint merge puts together with the others: I/N (docs/distributed.md)");
     render->add_option("--exposure", options.flags.exposure,
                        "Exposure in stops for PNG output: radiance × 2^EV before the tone curve (EXR and PFM "
                        "stay linear)");
@@ -357,6 +348,7 @@ static int run(int argc, char** argv) {
     add_serve_command(app);
     add_info_command(app);
     add_convert_command(app);
+    add_merge_command(app);
 
     try {
         app.parse(argc, argv);
@@ -372,6 +364,18 @@ static int run(int argc, char** argv) {
         return command_line_error(app, argc, argv, e);
     }
     if (render->parsed()) {
+        if (glint::cli::launched_by_mpi()) {
+#ifdef GLINT_HAVE_MPI
+            return glint::cli::run_mpi_render(options);
+#else
+            if (glint::cli::launched_ranks() > 1) {
+                return bad_input(
+                    "started by an MPI launcher with " + std::to_string(glint::cli::launched_ranks()) +
+                    " processes, but this glint was built without MPI (libopenmpi-dev was not found "
+                    "when it was configured): each process would render the whole image");
+            }
+#endif
+        }
         return run_render(options);
     }
     return 0;

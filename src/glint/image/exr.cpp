@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <initializer_list>
@@ -17,7 +18,7 @@
 
 namespace glint {
 
-std::vector<unsigned char> encode_exr(const Image& image) {
+std::vector<unsigned char> encode_exr(const Image& image, const ExrAttributes& attributes) {
     const size_t n = static_cast<size_t>(image.width) * static_cast<size_t>(image.height);
     // EXR stores channels as separate planes, conventionally in B, G, R order.
     std::vector<float> planes[3];
@@ -51,6 +52,24 @@ std::vector<unsigned char> encode_exr(const Image& image) {
     header.pixel_types = pixel_types;
     header.requested_pixel_types = pixel_types;
     header.compression_type = TINYEXR_COMPRESSIONTYPE_ZIP;
+    // Extra attributes as OpenEXR "string" attributes (the text, no terminating zero), in name order.
+    std::vector<EXRAttribute> extra;
+    for (const auto& [name, text] : attributes) {
+        if (name.empty() || name.size() > 255 || text.empty() ||
+            text.size() > static_cast<size_t>(INT32_MAX)) {
+            throw ImageWriteError("EXR attribute '" + name.substr(0, 64) +
+                                  "' has an empty or too long name or value");
+        }
+        EXRAttribute attribute{};
+        std::snprintf(attribute.name, sizeof(attribute.name), "%s", name.c_str());
+        std::snprintf(attribute.type, sizeof(attribute.type), "%s", "string");
+        // tinyexr only reads the value while encoding; the cast is for its C interface.
+        attribute.value = reinterpret_cast<unsigned char*>(const_cast<char*>(text.data()));
+        attribute.size = static_cast<int>(text.size());
+        extra.push_back(attribute);
+    }
+    header.num_custom_attributes = static_cast<int>(extra.size());
+    header.custom_attributes = extra.empty() ? nullptr : extra.data();
 
     unsigned char* memory = nullptr;
     const char* error = nullptr;
@@ -263,7 +282,8 @@ void check_exr_attributes(const unsigned char* data, std::size_t size, const EXR
     }
 }
 
-Image decode_checked_exr(const unsigned char* data, std::size_t size, const std::string& name) {
+Image decode_checked_exr(const unsigned char* data, std::size_t size, const std::string& name,
+                         ExrAttributes* attributes) {
     EXRVersion version;
     if (ParseEXRVersionFromMemory(&version, data, size) != TINYEXR_SUCCESS) {
         fail(name, "not a readable OpenEXR file (bad version field)");
@@ -365,6 +385,15 @@ Image decode_checked_exr(const unsigned char* data, std::size_t size, const std:
     }
     int channel_of[3];
     choose_channels(header, name, channel_of);
+    if (attributes) {
+        for (int a = 0; a < header.num_custom_attributes; ++a) {
+            const EXRAttribute& attribute = header.custom_attributes[a];
+            if (std::strcmp(attribute.type, "string") == 0 && attribute.size > 0 && attribute.value) {
+                (*attributes)[attribute.name] = std::string(reinterpret_cast<const char*>(attribute.value),
+                                                            static_cast<size_t>(attribute.size));
+            }
+        }
+    }
 
     ImageOwner owned_image;
     EXRImage& exr = owned_image.image;
@@ -423,9 +452,10 @@ Image decode_checked_exr(const unsigned char* data, std::size_t size, const std:
 
 }  // namespace
 
-Image decode_exr(const unsigned char* data, std::size_t size, const std::string& name) {
+Image decode_exr(const unsigned char* data, std::size_t size, const std::string& name,
+                 ExrAttributes* attributes) {
     try {
-        return decode_checked_exr(data, size, name);
+        return decode_checked_exr(data, size, name, attributes);
     } catch (const std::runtime_error&) {
         throw;
     } catch (const std::exception& e) {  // tinyexr's std::vector::at, or memory running out
@@ -434,5 +464,16 @@ Image decode_exr(const unsigned char* data, std::size_t size, const std::string&
 }
 
 }  // namespace image_detail
+
+ExrFile read_exr(const std::filesystem::path& path) {
+    const std::vector<unsigned char> bytes = image_detail::read_image_file(path);
+    if (image_detail::sniff_format(bytes.data(), bytes.size()) != image_detail::FileFormat::Exr) {
+        throw std::runtime_error(path.string() +
+                                 ": not an OpenEXR file (a file of another format, or not an image)");
+    }
+    ExrFile file;
+    file.image = image_detail::decode_exr(bytes.data(), bytes.size(), path.string(), &file.attributes);
+    return file;
+}
 
 }  // namespace glint

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "glint/image/image.hpp"
+#include "glint/image/image_io.hpp"
 
 namespace glint::image_detail {
 
@@ -21,8 +22,9 @@ namespace glint::image_detail {
 std::vector<unsigned char> read_image_file(const std::filesystem::path& path);
 
 // Decodes an OpenEXR file's R, G and B (or its single channel as grey) after checking its header
-// (exr.cpp).
-Image decode_exr(const unsigned char* data, std::size_t size, const std::string& name);
+// (exr.cpp); its "string" attributes into `attributes` when given.
+Image decode_exr(const unsigned char* data, std::size_t size, const std::string& name,
+                 ExrAttributes* attributes = nullptr);
 
 // Decodes a JPEG file through libjpeg-turbo after checking its declared size (jpeg.cpp).
 Image decode_jpeg(const unsigned char* data, std::size_t size, const std::string& name, bool srgb = true);

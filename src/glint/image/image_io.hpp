@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -57,10 +58,15 @@ void write_image(const Image& image, const std::filesystem::path& path, const Di
 // do not tell (root ignores them; read-only mounts, ACLs and quotas are not in them).
 void check_output_path(const std::filesystem::path& path);
 
-// Encoders into memory, for the atomic writer and for tests.
+// Extra header attributes of an OpenEXR file, name → text, written as OpenEXR "string" attributes
+// (what `glint render --tile` records for `glint merge`; `exrheader` shows them).
+using ExrAttributes = std::map<std::string, std::string>;
+
+// Encoders into memory, for the atomic writer and for tests. encode_exr writes `attributes` into the
+// header (a name of 1 to 255 bytes, a value not empty); without them the bytes are as before.
 std::vector<unsigned char> encode_png(const Image& image);
 std::vector<unsigned char> encode_pfm(const Image& image);
-std::vector<unsigned char> encode_exr(const Image& image);
+std::vector<unsigned char> encode_exr(const Image& image, const ExrAttributes& attributes = {});
 
 // Reads a PFM file: colour ("PF") as it is, grey ("Pf") with its value in all three channels. Throws
 // std::runtime_error naming the file and what is wrong otherwise.
@@ -78,6 +84,15 @@ Image decode_pfm(const std::vector<unsigned char>& bytes, const std::string& nam
 Image read_image(const std::filesystem::path& path, bool srgb = true);
 // The same, from a file's bytes already in memory; `name` is the file name used in error messages.
 Image decode_image(const std::vector<unsigned char>& bytes, const std::string& name, bool srgb = true);
+
+// An OpenEXR file read with its header's "string" attributes (others are ignored).
+struct ExrFile {
+    Image image;
+    ExrAttributes attributes;
+};
+// Reads an OpenEXR file as read_image does, with its string attributes; throws std::runtime_error naming
+// the file when it is not an OpenEXR file or cannot be read.
+ExrFile read_exr(const std::filesystem::path& path);
 
 // The sRGB transfer function's inverse (IEC 61966-2-1): an encoded value in [0, 1] to linear.
 double srgb_to_linear(double encoded);

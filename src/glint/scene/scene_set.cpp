@@ -146,11 +146,15 @@ void apply_flags(SceneDesc& desc, const RenderFlags& flags) {
     }
 }
 
-Scene build_scene(SceneDesc desc, const RenderFlags& flags, std::span<const std::string> sets) {
+void apply_flags_and_sets(SceneDesc& desc, const RenderFlags& flags, std::span<const std::string> sets) {
     apply_flags(desc, flags);
     for (const std::string& set : sets) {
         apply_set(desc, set);
     }
+}
+
+Scene build_scene(SceneDesc desc, const RenderFlags& flags, std::span<const std::string> sets) {
+    apply_flags_and_sets(desc, flags, sets);
     return build_scene(desc);
 }
 

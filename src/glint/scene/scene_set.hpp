@@ -46,6 +46,9 @@ std::vector<std::pair<std::string, std::string>> flag_edits(const RenderFlags& f
 // apply_set of each of flag_edits.
 void apply_flags(SceneDesc& desc, const RenderFlags& flags);
 
+// The flags applied to `desc`, then each of `sets` (apply_set, in order).
+void apply_flags_and_sets(SceneDesc& desc, const RenderFlags& flags, std::span<const std::string> sets);
+
 // The scene with the flags applied, then each of `sets` (apply_set, in order): what `glint render --width …
 // --set … FILE` renders, and what the Python module's render() builds from its keywords.
 Scene build_scene(SceneDesc desc, const RenderFlags& flags, std::span<const std::string> sets = {});

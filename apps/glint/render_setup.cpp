@@ -1,0 +1,112 @@
+#include "render_setup.hpp"
+
+#include <cstdio>
+#include <iostream>
+
+#include "commands.hpp"
+#include "glint/scene/scene_checks.hpp"
+#include "glint/scene/scene_desc.hpp"
+#include "glint/scene/scene_writer.hpp"
+
+namespace glint::cli {
+
+std::filesystem::path render_output_path(const RenderOptions& options) {
+    if (!options.output.empty()) {
+        return options.output;
+    }
+    return options.scene_path.empty() ? "default.png"
+                                      : std::filesystem::path(options.scene_path).stem().string() + ".png";
+}
+
+namespace {
+
+// 64-bit FNV-1a: stable across machines and builds, which std::hash is not.
+std::uint64_t fnv1a(const std::string& text) {
+    std::uint64_t hash = 0xcbf29ce484222325ull;
+    for (const unsigned char c : text) {
+        hash = (hash ^ c) * 0x100000001b3ull;
+    }
+    return hash;
+}
+
+}  // namespace
+
+PreparedRender prepare_render(const RenderOptions& options, bool print_warnings) {
+    SceneDesc desc =
+        options.scene_path.empty() ? default_scene() : load_scene(options.scene_path, options.import);
+    if (print_warnings) {
+        ::print_warnings(desc);
+    }
+    // The flags are short forms of --set: each is an edit of the scene's tree, checked by the builder like
+    // the file; the --set edits follow them, in order.
+    apply_flags_and_sets(desc, options.flags, options.sets);
+    PreparedRender prepared;
+    prepared.scene_hash = fnv1a(std::string("glint ") + GLINT_VERSION + "\n" + write_scene_yaml(desc.root));
+    prepared.scene = build_scene(desc);
+    if (print_warnings) {
+        for (const std::string& warning : scene_warnings(prepared.scene)) {
+            std::cerr << "glint: warning: " << warning << '\n';
+        }
+    }
+    if (options.threads) {
+        prepared.scene.view.settings.threads = *options.threads;
+    }
+    return prepared;
+}
+
+Image film_window(const Film& film, const PixelWindow& window) {
+    Image image(window.width(), window.height());
+    for (int y = 0; y < window.height(); ++y) {
+        for (int x = 0; x < window.width(); ++x) {
+            const Rgb c = film.pixel(window.x0 + x, window.y0 + y);
+            float* out = image.pixel(x, y);
+            out[0] = static_cast<float>(c.r);
+            out[1] = static_cast<float>(c.g);
+            out[2] = static_cast<float>(c.b);
+        }
+    }
+    return image;
+}
+
+void print_nonfinite_warning(const RenderStats& stats) {
+    if (stats.nonfinite_samples > 0) {
+        std::fprintf(stderr,
+                     "glint: warning: %llu samples were NaN or infinite and were left out of the image "
+                     "(first at pixel (%d, %d), sample %u)\n",
+                     static_cast<unsigned long long>(stats.nonfinite_samples), stats.first_nonfinite_x,
+                     stats.first_nonfinite_y, stats.first_nonfinite_sample);
+    }
+}
+
+ProgressBar::ProgressBar(bool enabled) : enabled_(enabled), start_(std::chrono::steady_clock::now()) {}
+
+void ProgressBar::update(double fraction) {
+    if (!enabled_) {
+        return;
+    }
+    const auto now = std::chrono::steady_clock::now();
+    if (fraction < 1.0 && now - last_draw_ < std::chrono::milliseconds(100)) {
+        return;
+    }
+    last_draw_ = now;
+    const double elapsed = std::chrono::duration<double>(now - start_).count();
+    constexpr int kWidth = 30;
+    const int filled = static_cast<int>(fraction * kWidth);
+    std::string bar(static_cast<size_t>(filled), '#');
+    bar.resize(kWidth, '.');
+    char eta[32] = "--";
+    if (fraction > 0.01) {
+        std::snprintf(eta, sizeof(eta), "%.1fs", elapsed * (1 - fraction) / fraction);
+    }
+    std::fprintf(stderr, "\r[%s] %5.1f%%  elapsed %.1fs  ETA %s   ", bar.c_str(), 100 * fraction, elapsed,
+                 eta);
+    std::fflush(stderr);
+}
+
+void ProgressBar::finish() {
+    if (enabled_) {
+        std::fprintf(stderr, "\r%*s\r", 70, "");
+    }
+}
+
+}  // namespace glint::cli
