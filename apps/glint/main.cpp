@@ -16,6 +16,7 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <optional>
 #include <sstream>
@@ -27,6 +28,8 @@
 #include "glint/image/image_io.hpp"
 #include "glint/import/importer.hpp"
 #include "glint/params/diagnostics.hpp"
+#include "glint/render/aov.hpp"
+#include "glint/render/checkpoint.hpp"
 #include "glint/render/render.hpp"
 #include "glint/scene/scene.hpp"
 #include "glint/scene/scene_checks.hpp"
@@ -108,7 +111,100 @@ int check_tile_options(const RenderOptions& options, const std::filesystem::path
             "--tile and --time-limit cannot be combined: the parts of one image must all "
             "take every sample");
     }
+    if (!options.aov.empty() || !options.checkpoint.empty() || !options.resume.empty()) {
+        return bad_input(
+            "--tile cannot be combined with --aov, --checkpoint or --resume yet: a part carries only "
+            "the image");
+    }
     return 0;
+}
+
+// What an EXR with AOVs records of its render (OpenEXR string attributes; `exrheader` lists them).
+glint::ExrAttributes exr_metadata(const glint::cli::PreparedRender& prepared,
+                                  const glint::RenderStats& stats) {
+    const glint::RenderSettings& settings = prepared.scene.view.settings;
+    char seconds[32];
+    std::snprintf(seconds, sizeof(seconds), "%.3f", stats.seconds);
+    std::string camera = prepared.camera_yaml;
+    while (!camera.empty() && camera.back() == '\n') {
+        camera.pop_back();
+    }
+    return {{"glintVersion", GLINT_VERSION},
+            {"glintCamera", camera},
+            {"glintSpp", std::to_string(stats.samples_per_pixel)},
+            {"glintSeed", std::to_string(settings.seed)},
+            {"glintRenderSeconds", seconds}};
+}
+
+// --aov: the list checked, and an output that can hold float layers.
+int check_aov_options(const RenderOptions& options, const std::filesystem::path& output,
+                      glint::AovRequest& request) {
+    if (options.aov.empty()) {
+        return 0;
+    }
+    try {
+        request = glint::parse_aov_list(options.aov);
+    } catch (const std::invalid_argument& e) {
+        return bad_input(std::string("--aov: ") + e.what());
+    }
+    if (glint::image_format_for(output) == glint::ImageFormat::Png) {
+        return bad_input(
+            "--aov needs linear float output: -o NAME.exr (one file, the AOVs as layers) or "
+            "-o NAME.pfm (a file per AOV beside it); " +
+            output.string() + " is a PNG");
+    }
+    return 0;
+}
+
+// The film of a checkpoint to resume (--resume), checked against the render about to start.
+int read_resume_checkpoint(const std::string& path, std::uint64_t fingerprint, const glint::View& view,
+                           std::optional<glint::Checkpoint>& checkpoint) {
+    std::error_code error;
+    const std::uintmax_t size = std::filesystem::file_size(path, error);
+    if (error) {
+        return bad_input(path + ": cannot read the checkpoint (" + error.message() + ")");
+    }
+    // Checked before anything is read: a checkpoint of this render has exactly this many bytes.
+    const std::uint64_t expected = glint::checkpoint_file_bytes(view.settings.width, view.settings.height);
+    if (size != expected) {
+        return bad_input(path + ": it is " + std::to_string(size) + " bytes long; a checkpoint of this " +
+                         std::to_string(view.settings.width) + " x " + std::to_string(view.settings.height) +
+                         " render has " + std::to_string(expected));
+    }
+    std::ifstream in(path, std::ios::binary);
+    std::vector<unsigned char> bytes(size);
+    if (!in.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(size))) {
+        return bad_input(path + ": cannot read the checkpoint");
+    }
+    try {
+        checkpoint = glint::decode_checkpoint(bytes, path);
+        glint::check_checkpoint_matches(*checkpoint, path, fingerprint, view.settings.width,
+                                        view.settings.height, view.sampler->samples_per_pixel());
+    } catch (const glint::CheckpointError& e) {
+        std::cerr << e.what() << '\n';
+        return kExitBadInput;
+    }
+    return 0;
+}
+
+// Writes the render's state to `path` atomically; a failure is a warning, not the end of the render.
+void write_checkpoint(const std::string& path, std::uint64_t fingerprint, std::uint32_t samples_done,
+                      std::uint32_t samples_asked, const glint::Film& film) {
+    try {
+        glint::write_file_atomically(
+            path, glint::encode_checkpoint(fingerprint, samples_done, samples_asked, film));
+    } catch (const glint::ImageWriteError& e) {
+        std::cerr << "glint: warning: could not write the checkpoint: " << e.what() << '\n';
+    }
+}
+
+// The AOV layers beside the image: in the EXR itself, or a PFM each (out.albedo.pfm, …).
+void write_aovs_as_pfm(const std::filesystem::path& output, const std::vector<glint::ImageLayer>& layers) {
+    for (const glint::ImageLayer& layer : layers) {
+        std::filesystem::path path = output;
+        path.replace_extension("." + layer.name + output.extension().string());
+        glint::write_file_atomically(path, glint::encode_pfm(layer));
+    }
 }
 
 int run_render(const RenderOptions& options) {
@@ -121,6 +217,10 @@ int run_render(const RenderOptions& options) {
     }
     std::optional<glint::cli::TileSpec> tile;
     if (const int refused = check_tile_options(options, output, tile); refused != 0) {
+        return refused;
+    }
+    glint::AovRequest aovs;
+    if (const int refused = check_aov_options(options, output, aovs); refused != 0) {
         return refused;
     }
 
@@ -152,13 +252,51 @@ int run_render(const RenderOptions& options) {
     }
 
     glint::Film film(settings.width, settings.height);
-    ProgressBar bar(!options.quiet && ::isatty(STDERR_FILENO));
     glint::RenderCallbacks callbacks;
+    const std::uint32_t samples_asked = scene.view.sampler->samples_per_pixel();
+    if (!options.resume.empty()) {
+        std::optional<glint::Checkpoint> checkpoint;
+        if (const int refused =
+                read_resume_checkpoint(options.resume, prepared.scene_hash, scene.view, checkpoint);
+            refused != 0) {
+            return refused;
+        }
+        film = std::move(checkpoint->film);
+        callbacks.resume_after_samples = checkpoint->samples_done;
+        if (!options.quiet) {
+            std::fprintf(stderr, "glint: resuming %s from %u of %u samples per pixel\n",
+                         options.resume.c_str(), checkpoint->samples_done, samples_asked);
+        }
+    }
+    auto last_checkpoint = std::chrono::steady_clock::now();
+    if (!options.checkpoint.empty()) {
+        // At the end of a pass (the film then holds the same samples in every pixel), once the interval
+        // has passed since the last one; and below, when the render stops early.
+        callbacks.pass_done = [&](const glint::Film& rendered, std::uint32_t samples_done) {
+            const auto now = std::chrono::steady_clock::now();
+            if (samples_done < samples_asked &&
+                std::chrono::duration<double>(now - last_checkpoint).count() >= options.checkpoint_every) {
+                write_checkpoint(options.checkpoint, prepared.scene_hash, samples_done, samples_asked,
+                                 rendered);
+                last_checkpoint = now;
+            }
+        };
+    }
+    ProgressBar bar(!options.quiet && ::isatty(STDERR_FILENO));
     callbacks.progress = [&bar](double fraction) { bar.update(fraction); };
     callbacks.stop_after_pass = &g_stop_after_pass;
     callbacks.time_limit_seconds = options.time_limit;
     const glint::RenderStats stats = glint::render(scene, film, callbacks);
     bar.finish();
+    const bool finished = !stats.cancelled && !stats.time_limit_reached;
+    if (!options.checkpoint.empty() && !finished && stats.samples_per_pixel > 0 &&
+        stats.samples_per_pixel < samples_asked) {
+        write_checkpoint(options.checkpoint, prepared.scene_hash, stats.samples_per_pixel, samples_asked,
+                         film);
+        std::fprintf(stderr, "glint: checkpoint %s holds %u of %u samples per pixel (--resume %s goes on)\n",
+                     options.checkpoint.c_str(), stats.samples_per_pixel, samples_asked,
+                     options.checkpoint.c_str());
+    }
 
     glint::cli::print_nonfinite_warning(stats);
     // Only the window was rendered (a crop or a part): it is written alone.
@@ -183,12 +321,29 @@ int run_render(const RenderOptions& options) {
             part.scene_hash = prepared.scene_hash;
             part.display = settings.display;
             glint::write_file_atomically(output, glint::encode_exr(image, glint::cli::part_attributes(part)));
+        } else if (aovs.any()) {
+            const glint::PixelWindow window =
+                settings.crop.value_or(glint::PixelWindow{0, 0, settings.width, settings.height});
+            const std::vector<glint::ImageLayer> layers =
+                glint::render_aovs(*scene.world, scene.view, film, window, stats.samples_per_pixel, aovs);
+            if (glint::image_format_for(output) == glint::ImageFormat::Exr) {
+                glint::write_file_atomically(output,
+                                             glint::encode_exr(image, exr_metadata(prepared, stats), layers));
+            } else {
+                write_aovs_as_pfm(output, layers);
+                glint::write_image(image, output, settings.display);
+            }
         } else {
             glint::write_image(image, output, settings.display);
         }
     } catch (const glint::ImageWriteError& e) {
         std::cerr << "glint: error: " << e.what() << '\n';
         return 1;
+    }
+    if (finished && !options.checkpoint.empty()) {
+        // The image has every sample: the checkpoint has served its purpose.
+        std::error_code ignored;  // already gone is fine
+        std::filesystem::remove(options.checkpoint, ignored);
     }
     if (stats.cancelled) {
         // Each pixel is the mean of the samples it has: an unfinished render, not a darker one.
@@ -339,6 +494,20 @@ static int run(int argc, char** argv) {
     render->add_option(
         "--tonemap", options.flags.tonemap,
         "Tone curve for PNG output: clamp (default), reinhard, aces, agx (EXR and PFM stay linear)");
+    render->add_option(
+        "--aov", options.aov,
+        "Extra layers for denoisers and compositing, comma-separated: albedo, normal, depth, spp, "
+        "variance (in the .exr as layers, or beside a .pfm as NAME.albedo.pfm, …)");
+    render->add_option("--checkpoint", options.checkpoint,
+                       "Write the render's state to this file every --checkpoint-every seconds and when it "
+                       "stops early (Ctrl-C, --time-limit); removed once the image is complete");
+    render
+        ->add_option("--checkpoint-every", options.checkpoint_every,
+                     "Seconds between checkpoints (default 60; at the end of a pass)")
+        ->check(CLI::PositiveNumber);
+    render->add_option("--resume", options.resume,
+                       "Go on from this checkpoint: the same command line gives the bits of a render that "
+                       "never stopped");
     render
         ->add_option("--time-limit", options.time_limit,
                      "Stop at the end of the pass that crosses this many seconds and write the image "

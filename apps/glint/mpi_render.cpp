@@ -145,6 +145,11 @@ int prepare_everywhere(const RenderOptions& options, int rank, int ranks, Prepar
     } else if (options.time_limit > 0) {
         status = kExitBadInput;
         message = "error: --time-limit is not available under mpirun: every rank must take every sample";
+    } else if (!options.aov.empty() || !options.checkpoint.empty() || !options.resume.empty()) {
+        status = kExitBadInput;
+        message =
+            "error: --aov, --checkpoint and --resume are not available under mpirun yet: rank 0 gathers "
+            "only the image (leave them out, or render in one process)";
     }
     if (status == 0 && rank == 0) {
         try {

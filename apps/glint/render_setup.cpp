@@ -42,6 +42,8 @@ PreparedRender prepare_render(const RenderOptions& options, bool print_warnings)
     apply_flags_and_sets(desc, options.flags, options.sets);
     PreparedRender prepared;
     prepared.scene_hash = fnv1a(std::string("glint ") + GLINT_VERSION + "\n" + write_scene_yaml(desc.root));
+    const Node* camera = desc.root.find("camera");
+    prepared.camera_yaml = camera ? write_scene_yaml(*camera) : "{} (the default camera)";
     prepared.scene = build_scene(desc);
     if (print_warnings) {
         for (const std::string& warning : scene_warnings(prepared.scene)) {

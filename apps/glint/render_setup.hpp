@@ -29,8 +29,12 @@ struct RenderOptions {
     std::vector<std::string> sets;    // --set key.path=value, in order
     std::optional<std::string> tile;  // --tile I/N: render part I of N (tile_parts.hpp)
     bool quiet = false;
-    ImportOptions import;   // for scenes of other tools (glint/import)
-    double time_limit = 0;  // seconds; 0: none
+    ImportOptions import;    // for scenes of other tools (glint/import)
+    double time_limit = 0;   // seconds; 0: none
+    std::string aov;         // --aov albedo,normal,…: extra layers (glint/render/aov.hpp); empty: none
+    std::string checkpoint;  // --checkpoint FILE: the film written there now and then
+    double checkpoint_every = 60;  // --checkpoint-every SECONDS
+    std::string resume;            // --resume FILE: start from that checkpoint
 };
 
 // The output path: -o, or <scene stem>.png, or default.png for the built-in scene.
@@ -44,6 +48,7 @@ std::filesystem::path render_output_path(const RenderOptions& options);
 struct PreparedRender {
     Scene scene;
     std::uint64_t scene_hash = 0;
+    std::string camera_yaml;  // the scene's camera block as built from (written into EXR metadata)
 };
 PreparedRender prepare_render(const RenderOptions& options, bool print_warnings);
 

@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "glint/params/diagnostics.hpp"
+
 namespace glint::cli {
 
 namespace {
@@ -33,18 +35,6 @@ std::vector<std::string> split(const std::string& text, char separator) {
         }
     }
     return pieces;
-}
-
-const char* tone_curve_name(ToneCurve curve) {
-    switch (curve) {
-        case ToneCurve::Reinhard:
-            return "reinhard";
-        case ToneCurve::Aces:
-            return "aces";
-        case ToneCurve::Clamp:
-            break;
-    }
-    return "clamp";
 }
 
 }  // namespace
@@ -89,7 +79,7 @@ ExrAttributes part_attributes(const PartInfo& part) {
         {"glintSpp", std::to_string(part.samples_per_pixel)},
         {"glintSceneHash", hash},
         {"glintExposure", exposure},
-        {"glintTonemap", tone_curve_name(part.display.curve)},
+        {"glintTonemap", tone_curve_table().name_of(part.display.curve)},
     };
 }
 
@@ -106,7 +96,7 @@ PartInfo part_from_attributes(const ExrAttributes& attributes, const std::string
         }
         return found->second;
     };
-    const auto malformed = [&](const char* name, const char* expected) {
+    const auto malformed = [&](const char* name, const std::string& expected) {
         return std::runtime_error(file + ": the glint part attribute " + name + " is '" +
                                   text(name).substr(0, 64) + "', not " + expected);
     };
@@ -170,13 +160,11 @@ PartInfo part_from_attributes(const ExrAttributes& attributes, const std::string
     }
     part.display.exposure = exposure_value;
     const std::string& curve = text("glintTonemap");
-    if (curve == "clamp" || curve == "reinhard" || curve == "aces") {
-        part.display.curve = curve == "clamp"      ? ToneCurve::Clamp
-                             : curve == "reinhard" ? ToneCurve::Reinhard
-                                                   : ToneCurve::Aces;
-    } else {
-        throw malformed("glintTonemap", "clamp, reinhard or aces");
+    const auto* entry = tone_curve_table().find(curve);
+    if (!entry) {
+        throw malformed("glintTonemap", "one of " + join_words(tone_curve_table().names()));
     }
+    part.display.curve = entry->value;
     return part;
 }
 

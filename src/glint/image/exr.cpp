@@ -18,39 +18,61 @@
 
 namespace glint {
 
-std::vector<unsigned char> encode_exr(const Image& image, const ExrAttributes& attributes) {
+std::vector<unsigned char> encode_exr(const Image& image, const ExrAttributes& attributes,
+                                      const std::vector<ImageLayer>& layers) {
     const size_t n = static_cast<size_t>(image.width) * static_cast<size_t>(image.height);
-    // EXR stores channels as separate planes, conventionally in B, G, R order.
-    std::vector<float> planes[3];
-    for (auto& p : planes) {
-        p.resize(n);
+    // Every channel as a plane of its own, named as OpenEXR's multi-layer convention has it: R, G, B for
+    // the image, "layer.channel" for the rest (albedo.R, depth.Z); in name order, which OpenEXR requires.
+    struct Plane {
+        std::string name;
+        std::vector<float> values;
+    };
+    std::vector<Plane> planes;
+    for (int c = 0; c < 3; ++c) {
+        Plane& plane = planes.emplace_back(Plane{std::string(1, "RGB"[c]), std::vector<float>(n)});
+        for (size_t i = 0; i < n; ++i) {
+            plane.values[i] = image.rgb[3 * i + static_cast<size_t>(c)];
+        }
     }
-    for (size_t i = 0; i < n; ++i) {
-        planes[0][i] = image.rgb[3 * i + 2];
-        planes[1][i] = image.rgb[3 * i + 1];
-        planes[2][i] = image.rgb[3 * i + 0];
+    for (const ImageLayer& layer : layers) {
+        if (layer.width != image.width || layer.height != image.height) {
+            throw ImageWriteError("EXR layer '" + layer.name + "' is " + std::to_string(layer.width) + "x" +
+                                  std::to_string(layer.height) + ", the image " +
+                                  std::to_string(image.width) + "x" + std::to_string(image.height));
+        }
+        const size_t count = layer.channels.size();
+        for (size_t c = 0; c < count; ++c) {
+            Plane& plane =
+                planes.emplace_back(Plane{layer.name + "." + layer.channels[c], std::vector<float>(n)});
+            for (size_t i = 0; i < n; ++i) {
+                plane.values[i] = layer.values[count * i + c];
+            }
+        }
     }
-    float* plane_ptrs[3] = {planes[0].data(), planes[1].data(), planes[2].data()};
+    std::sort(planes.begin(), planes.end(), [](const Plane& a, const Plane& b) { return a.name < b.name; });
+    std::vector<float*> plane_ptrs;
+    std::vector<EXRChannelInfo> channels(planes.size());
+    std::vector<int> pixel_types(planes.size(), TINYEXR_PIXELTYPE_FLOAT);
+    for (size_t c = 0; c < planes.size(); ++c) {
+        if (planes[c].name.size() >= sizeof(channels[c].name)) {
+            throw ImageWriteError("EXR channel name '" + planes[c].name + "' is too long");
+        }
+        std::snprintf(channels[c].name, sizeof(channels[c].name), "%s", planes[c].name.c_str());
+        plane_ptrs.push_back(planes[c].values.data());
+    }
 
     EXRHeader header;
     InitEXRHeader(&header);
     EXRImage exr;
     InitEXRImage(&exr);
-    exr.num_channels = 3;
-    exr.images = reinterpret_cast<unsigned char**>(plane_ptrs);
+    exr.num_channels = static_cast<int>(planes.size());
+    exr.images = reinterpret_cast<unsigned char**>(plane_ptrs.data());
     exr.width = image.width;
     exr.height = image.height;
-
-    EXRChannelInfo channels[3] = {};
-    const char* names[3] = {"B", "G", "R"};
-    int pixel_types[3] = {TINYEXR_PIXELTYPE_FLOAT, TINYEXR_PIXELTYPE_FLOAT, TINYEXR_PIXELTYPE_FLOAT};
-    for (int c = 0; c < 3; ++c) {
-        std::snprintf(channels[c].name, sizeof(channels[c].name), "%s", names[c]);
-    }
-    header.num_channels = 3;
-    header.channels = channels;
-    header.pixel_types = pixel_types;
-    header.requested_pixel_types = pixel_types;
+    header.num_channels = static_cast<int>(planes.size());
+    header.channels = channels.data();
+    header.pixel_types = pixel_types.data();
+    header.requested_pixel_types = pixel_types.data();
     header.compression_type = TINYEXR_COMPRESSIONTYPE_ZIP;
     // Extra attributes as OpenEXR "string" attributes (the text, no terminating zero), in name order.
     std::vector<EXRAttribute> extra;

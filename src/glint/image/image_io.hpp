@@ -63,10 +63,15 @@ void check_output_path(const std::filesystem::path& path);
 using ExrAttributes = std::map<std::string, std::string>;
 
 // Encoders into memory, for the atomic writer and for tests. encode_exr writes `attributes` into the
-// header (a name of 1 to 255 bytes, a value not empty); without them the bytes are as before.
+// header (a name of 1 to 255 bytes, a value not empty), and each of `layers` as channels named
+// "layer.channel" beside R, G and B (OpenEXR's multi-layer convention: albedo.R, depth.Z; the AOVs);
+// without either the bytes are as before.
 std::vector<unsigned char> encode_png(const Image& image);
 std::vector<unsigned char> encode_pfm(const Image& image);
-std::vector<unsigned char> encode_exr(const Image& image, const ExrAttributes& attributes = {});
+// A layer of 3 channels as a colour PFM ("PF"), of 1 as a grey one ("Pf").
+std::vector<unsigned char> encode_pfm(const ImageLayer& layer);
+std::vector<unsigned char> encode_exr(const Image& image, const ExrAttributes& attributes = {},
+                                      const std::vector<ImageLayer>& layers = {});
 
 // Reads a PFM file: colour ("PF") as it is, grey ("Pf") with its value in all three channels. Throws
 // std::runtime_error naming the file and what is wrong otherwise.

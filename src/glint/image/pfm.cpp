@@ -26,19 +26,38 @@ bool pfm_space(unsigned char c) {
 
 }  // namespace
 
-std::vector<unsigned char> encode_pfm(const Image& image) {
+namespace {
+
+// A PFM of `channels` (3: "PF", 1: "Pf") interleaved floats per pixel, rows given top to bottom.
+std::vector<unsigned char> encode_pfm_values(const float* values, int width, int height, int channels) {
     std::ostringstream header;
     // A negative scale declares little-endian floats; rows go bottom to top.
-    header << "PF\n" << image.width << ' ' << image.height << "\n-1.0\n";
+    header << (channels == 3 ? "PF" : "Pf") << '\n' << width << ' ' << height << "\n-1.0\n";
     const std::string h = header.str();
     std::vector<unsigned char> bytes(h.begin(), h.end());
     static_assert(std::endian::native == std::endian::little, "PFM writer assumes a little-endian machine");
-    const size_t row_bytes = static_cast<size_t>(image.width) * 3 * sizeof(float);
-    for (int y = image.height - 1; y >= 0; --y) {
-        const auto* row = reinterpret_cast<const unsigned char*>(image.pixel(0, y));
-        bytes.insert(bytes.end(), row, row + row_bytes);
+    const size_t row_floats = static_cast<size_t>(width) * static_cast<size_t>(channels);
+    for (int y = height - 1; y >= 0; --y) {
+        const auto* row =
+            reinterpret_cast<const unsigned char*>(values + static_cast<size_t>(y) * row_floats);
+        bytes.insert(bytes.end(), row, row + row_floats * sizeof(float));
     }
     return bytes;
+}
+
+}  // namespace
+
+std::vector<unsigned char> encode_pfm(const Image& image) {
+    return encode_pfm_values(image.rgb.data(), image.width, image.height, 3);
+}
+
+std::vector<unsigned char> encode_pfm(const ImageLayer& layer) {
+    if (layer.channels.size() != 1 && layer.channels.size() != 3) {
+        throw ImageWriteError("PFM holds 1 or 3 channels; layer '" + layer.name + "' has " +
+                              std::to_string(layer.channels.size()));
+    }
+    return encode_pfm_values(layer.values.data(), layer.width, layer.height,
+                             static_cast<int>(layer.channels.size()));
 }
 
 Image decode_pfm(const std::vector<unsigned char>& bytes, const std::string& name) {

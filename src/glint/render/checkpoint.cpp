@@ -59,16 +59,26 @@ class Reader {
 
 }  // namespace
 
+std::uint64_t checkpoint_file_bytes(int width, int height) {
+    return kHeaderBytes +
+           kPixelBytes * static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height);
+}
+
 std::vector<unsigned char> encode_checkpoint(const Checkpoint& checkpoint) {
-    const Film& film = checkpoint.film;
-    Writer out(kHeaderBytes + kPixelBytes * static_cast<std::size_t>(film.width()) * film.height());
+    return encode_checkpoint(checkpoint.scene_fingerprint, checkpoint.samples_done, checkpoint.samples_asked,
+                             checkpoint.film);
+}
+
+std::vector<unsigned char> encode_checkpoint(std::uint64_t scene_fingerprint, std::uint32_t samples_done,
+                                             std::uint32_t samples_asked, const Film& film) {
+    Writer out(checkpoint_file_bytes(film.width(), film.height()));
     out.put(kMagic);
     out.put(kFormatVersion);
-    out.put(checkpoint.scene_fingerprint);
+    out.put(scene_fingerprint);
     out.put(static_cast<std::uint32_t>(film.width()));
     out.put(static_cast<std::uint32_t>(film.height()));
-    out.put(checkpoint.samples_done);
-    out.put(checkpoint.samples_asked);
+    out.put(samples_done);
+    out.put(samples_asked);
     for (int y = 0; y < film.height(); ++y) {
         for (int x = 0; x < film.width(); ++x) {
             const Film::Pixel& pixel = film.raw_pixel(x, y);
@@ -110,7 +120,7 @@ Checkpoint decode_checkpoint(const std::vector<unsigned char>& bytes, const std:
                        std::to_string(checkpoint.samples_asked) +
                        " samples per pixel; expected at least 1 and fewer than asked");
     }
-    const std::uint64_t expected = kHeaderBytes + kPixelBytes * std::uint64_t{width} * height;
+    const std::uint64_t expected = checkpoint_file_bytes(static_cast<int>(width), static_cast<int>(height));
     if (bytes.size() != expected) {
         fail(name, "it is " + std::to_string(bytes.size()) + " bytes long; a " + std::to_string(width) +
                        " x " + std::to_string(height) + " checkpoint has " + std::to_string(expected));

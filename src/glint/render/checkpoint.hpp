@@ -37,6 +37,12 @@ struct CheckpointError : std::runtime_error {
 };
 
 std::vector<unsigned char> encode_checkpoint(const Checkpoint& checkpoint);
+// The same without copying the film into a Checkpoint (what a render in progress writes).
+std::vector<unsigned char> encode_checkpoint(std::uint64_t scene_fingerprint, std::uint32_t samples_done,
+                                             std::uint32_t samples_asked, const Film& film);
+
+// The length of a checkpoint file of a width × height render: what a reader checks before reading.
+std::uint64_t checkpoint_file_bytes(int width, int height);
 
 // Reads a checkpoint from its bytes; `name` is the file name used in messages. Every size is checked
 // against the limits and the length of `bytes` before anything is allocated from it; sums must be
