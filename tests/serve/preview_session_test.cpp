@@ -109,3 +109,22 @@ TEST_F(PreviewEdits, AnEditThatChangesNothingKeepsTheAccumulation) {
 
 }  // namespace
 }  // namespace glint
+
+namespace glint {
+namespace {
+
+TEST_F(PreviewEdits, ExportWritesAbsolutePathsSoTheSceneRendersFromAnyFolder) {
+    const std::string yaml = session_->export_yaml();
+    const std::string absolute =
+        (std::filesystem::absolute(dir_.path()) / "torus.ply").lexically_normal().generic_string();
+    EXPECT_NE(yaml.find("file: " + absolute), std::string::npos) << yaml;
+    // Read as if saved somewhere else entirely: it builds, with the same mesh.
+    const Scene exported =
+        build_scene(parse_scene_text(yaml, "/somewhere/else/exported.yaml", "/somewhere/else"));
+    EXPECT_EQ(exported.world->shapes.size(), 1u);
+    // The scene in the session keeps its own relative path.
+    EXPECT_NE(session_->state().yaml.find("file: torus.ply"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace glint

@@ -42,4 +42,9 @@ SceneDesc load_scene(const std::filesystem::path& path, const ImportOptions& opt
 // from `output_dir`, so the written scene renders the same wherever it is saved.
 std::string scene_yaml_for(const SceneDesc& desc, const std::filesystem::path& output_dir);
 
+// The same with every relative file path made absolute: for a scene saved where glint cannot know (the
+// preview's Export scene, downloaded by a browser), which then renders the same from any folder on
+// this machine.
+std::string scene_yaml_with_absolute_paths(const SceneDesc& desc);
+
 }  // namespace glint

@@ -44,20 +44,23 @@ namespace {
 
 // Rewrites the relative paths anywhere in the tree: the values of `file` (meshes, image textures) and of
 // `image` when it is a file name (the environment light's map).
-void rebase_file_paths(Node& node, const std::filesystem::path& from, const std::filesystem::path& to) {
+// Every relative `file` or `image` value of the tree, which resolves against `from`, replaced by
+// `rewrite(from / value)`.
+template <typename Rewrite>
+void rebase_file_paths(Node& node, const std::filesystem::path& from, const Rewrite& rewrite) {
     if (node.is_map()) {
         for (std::size_t i = 0; i < node.items.size(); ++i) {
             Node& value = node.items[i];
             const bool path_key = node.keys[i] == "file" || node.keys[i] == "image";
             if (path_key && value.is_scalar() && std::filesystem::path(value.scalar).is_relative()) {
-                value.scalar = scene_tree::path_relative_to(from / value.scalar, to);
+                value.scalar = rewrite(from / value.scalar);
             } else {
-                rebase_file_paths(value, from, to);
+                rebase_file_paths(value, from, rewrite);
             }
         }
     } else if (node.is_sequence()) {
         for (Node& item : node.items) {
-            rebase_file_paths(item, from, to);
+            rebase_file_paths(item, from, rewrite);
         }
     }
 }
@@ -66,8 +69,19 @@ void rebase_file_paths(Node& node, const std::filesystem::path& from, const std:
 
 std::string scene_yaml_for(const SceneDesc& desc, const std::filesystem::path& output_dir) {
     Node root = desc.root;
+    const std::filesystem::path to = output_dir.empty() ? "." : output_dir;
+    rebase_file_paths(
+        root, desc.base_dir.empty() ? "." : desc.base_dir,
+        [&](const std::filesystem::path& file) { return scene_tree::path_relative_to(file, to); });
+    return write_scene_yaml(root);
+}
+
+std::string scene_yaml_with_absolute_paths(const SceneDesc& desc) {
+    Node root = desc.root;
     rebase_file_paths(root, desc.base_dir.empty() ? "." : desc.base_dir,
-                      output_dir.empty() ? "." : output_dir);
+                      [](const std::filesystem::path& file) {
+                          return std::filesystem::absolute(file).lexically_normal().generic_string();
+                      });
     return write_scene_yaml(root);
 }
 

@@ -744,14 +744,16 @@ struct PreviewServer::Impl {
                          });
                  }));
 
-        http.Get("/api/scene.yaml", guarded([this](const httplib::Request&, httplib::Response& res) {
-                     res.set_header("Cache-Control", "no-store");
-                     res.set_header("Content-Disposition", "attachment; filename=\"scene.yaml\"");
-                     res.set_content(
-                         "# Exported by glint serve: glint render scene.yaml renders this view.\n" +
-                             session.state().yaml,
-                         "application/yaml");
-                 }));
+        http.Get(
+            "/api/scene.yaml", guarded([this](const httplib::Request&, httplib::Response& res) {
+                res.set_header("Cache-Control", "no-store");
+                res.set_header("Content-Disposition", "attachment; filename=\"scene.yaml\"");
+                res.set_content(
+                    "# Exported by glint serve: glint render scene.yaml renders this view. Its file paths\n"
+                    "# are absolute, so it renders from any folder of this machine.\n" +
+                        session.export_yaml(),
+                    "application/yaml");
+            }));
 
         http.Get("/api/events", guarded([this](const httplib::Request&, httplib::Response& res) {
                      if (open_streams.fetch_add(1) >= kMaxEventStreams) {

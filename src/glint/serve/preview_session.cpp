@@ -4,6 +4,7 @@
 
 #include "glint/image/image_io.hpp"
 #include "glint/image/tone_map.hpp"
+#include "glint/import/importer.hpp"
 #include "glint/render/progressive.hpp"
 #include "glint/scene/scene_writer.hpp"
 #include "glint/serve/serve_limits.hpp"
@@ -146,6 +147,16 @@ std::uint64_t PreviewSession::commit(EditedScene edited) {
 PreviewSession::State PreviewSession::state() const {
     std::lock_guard lock(mutex_);
     return {generation_.load(), root_, yaml_, scene_->view.settings};
+}
+
+std::string PreviewSession::export_yaml() const {
+    SceneDesc desc;
+    {
+        std::lock_guard lock(mutex_);
+        desc.root = root_;
+    }
+    desc.base_dir = base_dir_;
+    return scene_yaml_with_absolute_paths(desc);
 }
 
 std::shared_ptr<const World> PreviewSession::world() const {

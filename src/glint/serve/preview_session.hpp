@@ -74,6 +74,9 @@ class PreviewSession {
         RenderSettings settings;  // as built: the defaults filled in
     };
     State state() const;
+    // The current scene as YAML for a file saved anywhere: its relative file paths made absolute
+    // (Export scene).
+    std::string export_yaml() const;
     // The built world being rendered: the same object after an edit that kept it (tests use this).
     std::shared_ptr<const World> world() const;
     const std::string& display_name() const { return display_name_; }
