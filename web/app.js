@@ -139,6 +139,8 @@ function setState(next) {
   if (rebuild) buildControls();
   else updateControls();
   if (state.render_error) showError(state.render_error);
+  $('refine-continuously').checked = state.continuous;
+  $('refine-note').hidden = state.extendable || !state.continuous;
 }
 
 // ---- frames ---------------------------------------------------------------------------------------
@@ -539,6 +541,17 @@ function setupDisplay() {
   };
   exposure.addEventListener('input', send);
   tonemap.addEventListener('change', send);
+  const refine = $('refine-continuously');
+  refine.addEventListener('change', async () => {
+    try {
+      const response = await postJson('/api/refine', {continuous: refine.checked});
+      const body = await response.json();
+      if (!response.ok) showError(body.error || `error ${response.status}`);
+      else $('refine-note').hidden = body.extendable;
+    } catch (error) {
+      showError(`cannot reach glint serve: ${error}`);
+    }
+  });
 }
 
 // Until the user moves them, the controls show what the frames are shown through (the scene's own).

@@ -9,6 +9,7 @@
 #include "glint/render/render.hpp"
 #include "glint/scene/scene.hpp"
 #include "glint/scene/scene_desc.hpp"
+#include "test_util.hpp"
 
 namespace glint {
 namespace {
@@ -117,6 +118,45 @@ TEST(ProgressiveRender, NonFiniteSamplesAreCountedAndNamedNotZeroed) {
     EXPECT_EQ(preview.first_nonfinite_x, stats.first_nonfinite_x);
     EXPECT_EQ(preview.first_nonfinite_y, stats.first_nonfinite_y);
     EXPECT_EQ(preview.first_nonfinite_sample, stats.first_nonfinite_sample);
+}
+
+}  // namespace
+}  // namespace glint
+
+namespace glint {
+namespace {
+
+// The preview's continuous refinement: a finished render of 8 samples taken on to 24 is, bit for bit,
+// a render of 24 (Sobol's points do not depend on the count); a pattern whose points do refuses.
+TEST(ProgressiveRender, ExtendingAnExtendableTargetGivesTheBitsOfTheLargerRender) {
+    const char* scene_text =
+        "render: {width: 12, height: 8, samples: 8, integrator: path}\n"
+        "objects:\n  - {type: sphere, radius: 1}\nlights:\n  - {type: environment, radiance: [0.5, 0.7, "
+        "1]}\n";
+    const Scene scene = test::scene_from_text(scene_text);
+    ProgressiveRender progressive(*scene.world, scene.view);
+    while (!progressive.complete()) {
+        progressive.next_pass();
+    }
+    ASSERT_TRUE(progressive.extendable());
+    EXPECT_FALSE(progressive.extend_target(8));  // not above the target
+    ASSERT_TRUE(progressive.extend_target(24));
+    EXPECT_FALSE(progressive.complete());
+    while (!progressive.complete()) {
+        progressive.next_pass();
+    }
+    EXPECT_EQ(progressive.samples_done(), 24u);
+    RenderFlags more;
+    more.samples_per_pixel = 24;
+    const Film reference = test::render_film(test::scene_from_text(scene_text, more));
+    EXPECT_EQ(progressive.film().to_image().rgb, reference.to_image().rgb);
+
+    RenderFlags jittered;
+    jittered.sampler = "jittered";
+    const Scene other = test::scene_from_text(scene_text, jittered);
+    ProgressiveRender fixed(*other.world, other.view);
+    EXPECT_FALSE(fixed.extendable());
+    EXPECT_FALSE(fixed.extend_target(64));
 }
 
 }  // namespace

@@ -504,3 +504,26 @@ TEST_F(PreviewServerTest, SaveExrGivesTheFilmsRadianceAsItIsAndTheDisplayControl
 
 }  // namespace
 }  // namespace glint
+
+namespace glint {
+namespace {
+
+TEST_F(PreviewServerTest, RefineTakesOnlyABooleanAndSaysWhetherThePatternCanGoOn) {
+    const auto on = post("/api/refine", R"({"continuous": true})");
+    ASSERT_TRUE(on);
+    ASSERT_EQ(on->status, 200) << on->body;
+    EXPECT_EQ(json::parse(on->body)["continuous"], true);
+    // The default scene samples with the paper's jittered pattern, whose points depend on the count.
+    EXPECT_EQ(json::parse(on->body)["extendable"], false);
+    EXPECT_EQ(json::parse(client().Get("/api/scene")->body)["continuous"], true);
+    ASSERT_EQ(post("/api/refine", R"({"continuous": false})")->status, 200);
+    for (const char* bad :
+         {R"({"continuous": 1})", R"({})", R"({"continuous": true, "more": 1})", "[true]"}) {
+        const auto refused = post("/api/refine", bad);
+        ASSERT_TRUE(refused);
+        EXPECT_EQ(refused->status, 400) << bad;
+    }
+}
+
+}  // namespace
+}  // namespace glint

@@ -128,3 +128,48 @@ TEST_F(PreviewEdits, ExportWritesAbsolutePathsSoTheSceneRendersFromAnyFolder) {
 
 }  // namespace
 }  // namespace glint
+
+namespace glint {
+namespace {
+
+TEST(PreviewContinuous, RefinesPastTheTargetUntilToldToStopWithTheBitsOfThatManySamples) {
+    const std::string text =
+        "render: {width: 16, height: 12, samples: 4}\ncamera: {eye: [0, 0, 4], look_at: [0, 0, 0], fov: 40}\n"
+        "objects:\n  - {type: sphere, radius: 1}\nlights:\n  - {type: point, position: [2, 2, 2], intensity: "
+        "10}\n";
+    PreviewSession session(parse_scene_text(text, "c.yaml", "."), "c.yaml");
+    EXPECT_TRUE(session.state().extendable);
+    session.set_continuous(true);
+    // Wait for a frame past the scene's 4 samples.
+    std::shared_ptr<const PreviewFrame> frame;
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+    std::uint64_t seen = 0;
+    while (std::chrono::steady_clock::now() < deadline) {
+        frame = session.wait_for_frame(seen, std::chrono::milliseconds(100));
+        if (frame && frame->samples > 16) {
+            break;
+        }
+        seen = frame ? frame->id : 0;
+    }
+    ASSERT_TRUE(frame && frame->samples > 16);
+    session.set_continuous(false);
+    // What it shows is a render of that many samples, bit for bit.
+    RenderFlags flags;
+    flags.samples_per_pixel = frame->samples;
+    const Film reference = test::render_film(build_scene(parse_scene_text(text, "c.yaml", "."), flags));
+    EXPECT_EQ(frame->linear->rgb, reference.to_image().rgb);
+    // Stopped: the render settles at the target it had reached (or the one it had just doubled to when
+    // told), and then no frame follows.
+    std::shared_ptr<const PreviewFrame> last = session.latest_frame();
+    for (std::shared_ptr<const PreviewFrame> next;
+         (next = session.wait_for_frame(last->id, std::chrono::seconds(2)))->id != last->id;) {
+        last = next;
+    }
+    EXPECT_FALSE(session.continuous());
+    EXPECT_EQ(last->samples, last->target);
+    EXPECT_LE(last->target, 2 * frame->target);
+    session.stop();
+}
+
+}  // namespace
+}  // namespace glint

@@ -65,6 +65,18 @@ void ProgressiveRender::plan() {
     tallies_.resize(tiles_.size());
 }
 
+bool ProgressiveRender::extendable() const {
+    return view_.sampler->extendable();
+}
+
+bool ProgressiveRender::extend_target(std::uint32_t samples) {
+    if (!extendable() || samples <= target_) {
+        return false;
+    }
+    target_ = samples;
+    return true;
+}
+
 void ProgressiveRender::resume_after(std::uint32_t samples) {
     if (done_ != 0 || samples >= target_) {
         throw std::invalid_argument("render: a render resumes only before its first pass, below its target");

@@ -38,6 +38,12 @@ class ProgressiveRender {
     // The samples per pixel the next pass takes (0 when complete).
     std::uint32_t next_pass_samples() const;
 
+    // Raises the target to `samples` per pixel when the view's sampler is extendable (Sampler::extendable:
+    // its points do not depend on the count), so that the film then equals a render of that many
+    // samples; false, changing nothing, otherwise or when `samples` is not above the target.
+    bool extend_target(std::uint32_t samples);
+    bool extendable() const;
+
     // Continues a render stopped after `samples` samples per pixel (a checkpoint's): the film must hold
     // exactly those samples of every pixel (render/checkpoint.hpp). The passes then take the samples
     // they would have taken had the render never stopped. Throws std::invalid_argument if `samples` is

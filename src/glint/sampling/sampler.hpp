@@ -34,6 +34,11 @@ class Sampler {
     // Point `key.sample()` of the pattern for the key's pixel in `dimension`; in [0,1)².
     virtual Point2 sample_2d(const SampleHashes& key, std::uint32_t dimension) const = 0;
 
+    // True when a point does not depend on the number of samples the pattern was made for (the index
+    // is not wrapped or permuted by it): a render may then take more samples than asked, and sample i is
+    // the same whatever the target — the preview's continuous refinement.
+    virtual bool extendable() const { return false; }
+
     // A 1-D sample; by default the x of the 2-D pattern, which is stratified into n intervals for every
     // pattern but random (regular and jittered, whose x has only √n strata, override this).
     virtual double sample_1d(const SampleHashes& key, std::uint32_t dimension) const {

@@ -15,6 +15,7 @@ class SobolSampler final : public Sampler {
   public:
     explicit SobolSampler(std::uint32_t samples_per_pixel) : n_(std::max(1u, samples_per_pixel)) {}
     std::uint32_t samples_per_pixel() const override { return n_; }
+    bool extendable() const override { return true; }  // the index is only scrambled, never wrapped
     Point2 sample_2d(const SampleHashes& key, std::uint32_t dimension) const override;
     // The x of sample_2d, without computing its y.
     double sample_1d(const SampleHashes& key, std::uint32_t dimension) const override;

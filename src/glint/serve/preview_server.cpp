@@ -533,6 +533,8 @@ struct PreviewServer::Impl {
                   {"integrator", state.settings.integrator},
                   {"max_depth", state.settings.max_depth},
                   {"seed", state.settings.seed}}},
+                {"continuous", session.continuous()},
+                {"extendable", state.extendable},
                 {"scene", node_to_json(state.root)},
                 {"yaml", state.yaml},
                 {"render_error", status.generation == state.generation ? status.error : ""},
@@ -711,6 +713,23 @@ struct PreviewServer::Impl {
                 send_json(res,
                           {{"exposure", now.exposure}, {"tonemap", tone_curve_table().name_of(now.curve)}});
             }));
+
+        // Continuous refinement (PreviewSession::set_continuous): {"continuous": true} refines past the
+        // target until told to stop, {"continuous": false} stops at the target reached.
+        http.Post("/api/refine", guarded([this](const httplib::Request& req, httplib::Response& res) {
+                      if (!json_content_type(req, res)) {
+                          return;
+                      }
+                      const nlohmann::json body = parse_request_json(req.body);
+                      if (!body.is_object() || body.size() != 1 || !body.contains("continuous") ||
+                          !body["continuous"].is_boolean()) {
+                          send_error(res, 400, "expected {\"continuous\": true or false}");
+                          return;
+                      }
+                      session.set_continuous(body["continuous"].get<bool>());
+                      send_json(res, {{"continuous", session.continuous()},
+                                      {"extendable", session.state().extendable}});
+                  }));
 
         // The latest frame's radiance as the film holds it, as OpenEXR (32-bit float, linear).
         http.Get("/api/image.exr", guarded([this](const httplib::Request&, httplib::Response& res) {

@@ -146,7 +146,7 @@ std::uint64_t PreviewSession::commit(EditedScene edited) {
 
 PreviewSession::State PreviewSession::state() const {
     std::lock_guard lock(mutex_);
-    return {generation_.load(), root_, yaml_, scene_->view.settings};
+    return {generation_.load(), root_, yaml_, scene_->view.settings, scene_->view.sampler->extendable()};
 }
 
 std::string PreviewSession::export_yaml() const {
@@ -200,6 +200,19 @@ std::optional<PreviewSession::FocusHit> PreviewSession::focus_at(double x, doubl
     const double distance = hit.t * length(ray.direction);
     const double cosine = dot(normalize(ray.direction), normalize(axis.direction));
     return FocusHit{distance, distance * cosine};
+}
+
+bool PreviewSession::keeps_refining(const ProgressiveRender& progressive) const {
+    return continuous_.load() && progressive.extendable() &&
+           progressive.target_samples() < preview_limits::kMaxSamples;
+}
+
+void PreviewSession::set_continuous(bool continuous) {
+    {
+        std::lock_guard lock(mutex_);
+        continuous_ = continuous;
+    }
+    changed_.notify_all();
 }
 
 DisplayTransform PreviewSession::display() const {
@@ -262,6 +275,7 @@ void PreviewSession::publish_locked(std::shared_ptr<const Image> linear, std::ui
                                {"mrays_per_second", std::round(mrays * 100) / 100},
                                {"seconds", std::round(seconds * 1000) / 1000},
                                {"exposure", frame->display.exposure},
+                               {"continuous", continuous_.load()},
                                {"tonemap", tone_curve_table().name_of(frame->display.curve)},
                                {"png", base64(frame->png)}};
         if (stats.nonfinite_samples > 0) {
@@ -291,7 +305,7 @@ void PreviewSession::render_loop() {
             std::unique_lock lock(mutex_);
             changed_.wait(lock, [&] {
                 return stop_.load() || generation_.load() != generation ||
-                       (progressive && !progressive->complete());
+                       (progressive && (!progressive->complete() || keeps_refining(*progressive)));
             });
             if (stop_) {
                 return;
@@ -318,6 +332,11 @@ void PreviewSession::render_loop() {
                         std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count());
                 }
                 continue;
+            }
+            if (progressive->complete() && keeps_refining(*progressive)) {
+                // Continuous refinement: twice the samples, the same bits as a render of that many.
+                progressive->extend_target(static_cast<std::uint32_t>(std::min<std::int64_t>(
+                    2 * std::int64_t{progressive->target_samples()}, preview_limits::kMaxSamples)));
             }
             if (progressive->next_pass(cancelled)) {
                 publish(std::make_shared<const Image>(progressive->film().to_image()), generation,

@@ -28,6 +28,8 @@
 
 namespace glint {
 
+class ProgressiveRender;
+
 // One picture sent to the browsers.
 struct PreviewFrame {
     std::uint64_t id = 0;          // increases with every frame
@@ -72,6 +74,7 @@ class PreviewSession {
         Node root;
         std::string yaml;
         RenderSettings settings;  // as built: the defaults filled in
+        bool extendable;          // its sample pattern can refine past its target (Sampler::extendable)
     };
     State state() const;
     // The current scene as YAML for a file saved anywhere: its relative file paths made absolute
@@ -96,6 +99,13 @@ class PreviewSession {
     // What frames are shown through now: the override, or the current scene's own.
     DisplayTransform display() const;
 
+    // Continuous refinement: when on, a finished render goes on, its target doubled each time it is
+    // reached, up to preview_limits::kMaxSamples, as long as the scene's sample pattern allows it
+    // (Sampler::extendable: sobol, the default, and random); the image after n samples is the bits of a
+    // render of n. Off: the render stops at the target it has reached. A scene edit keeps the choice.
+    void set_continuous(bool continuous);
+    bool continuous() const { return continuous_.load(); }
+
     // Where the ray through film point (x, y) (pixels, from the top-left) first hits the scene, through
     // the lens centre: the distance along the ray and the depth along the view axis (the distance of
     // the plane of focus that makes that point sharp). nullopt when the ray escapes.
@@ -110,6 +120,7 @@ class PreviewSession {
 
   private:
     void render_loop();
+    bool keeps_refining(const ProgressiveRender& progressive) const;
     // `linear` is the film's radiance; the frame shows it through display().
     void publish(std::shared_ptr<const Image> linear, std::uint64_t generation, std::uint32_t samples,
                  std::uint32_t target, const RenderStats& stats, double seconds);
@@ -136,6 +147,7 @@ class PreviewSession {
     std::uint64_t next_frame_id_ = 1;
     std::atomic<std::uint64_t> generation_{1};
     std::atomic<bool> stop_{false};
+    std::atomic<bool> continuous_{false};
 
     // One publish at a time, from reading the display to storing the frame: a display change then
     // never loses to a frame encoded through the display before it.
