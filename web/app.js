@@ -346,6 +346,24 @@ function buildRender() {
   box.append(addKeyRow(['render']));
 }
 
+// The lens radius slider's range, scaled to the scene: up to a tenth of the distance the camera looks
+// at (its focus distance, else eye to look_at), rounded up to 1, 2 or 5 × a power of ten, so the slider
+// does as much in a scene in millimetres as in one in metres; 0.5 when the camera says no distance.
+function lensRadiusRange(camera) {
+  const eye = camera.eye, target = camera.look_at;
+  const distance = Number(camera.focus_distance) > 0 ? Number(camera.focus_distance)
+    : Array.isArray(eye) && Array.isArray(target) && eye.length === 3 && target.length === 3
+      ? Math.sqrt(eye.reduce((sum, e, i) => sum + (e - target[i]) ** 2, 0)) : 0;
+  let max = ranges.lens_radius[1];
+  if (distance > 0 && Number.isFinite(distance)) {
+    const tenth = distance / 10;
+    const power = 10 ** Math.floor(Math.log10(tenth));
+    max = [1, 2, 5, 10].map((m) => m * power).find((v) => v >= tenth);
+  }
+  max = Math.max(max, Number(camera.lens_radius) || 0);
+  return [0, max, max / 100];
+}
+
 function buildCamera() {
   const camera = state.scene.camera || {};
   const box = $('camera-fields');
@@ -355,7 +373,7 @@ function buildCamera() {
   if ('f_stop' in camera) {
     box.append(field('f-stop', sliderInput(['camera', 'f_stop'], camera.f_stop, ranges.f_stop)));
   } else {
-    const inputs = sliderInput(['camera', 'lens_radius'], camera.lens_radius ?? 0, ranges.lens_radius,
+    const inputs = sliderInput(['camera', 'lens_radius'], camera.lens_radius ?? 0, lensRadiusRange(camera),
       (v) => cameraEdit('lens_radius', v));
     box.append(field('aperture', inputs, 'lens radius (0: pinhole, everything sharp)'));
   }

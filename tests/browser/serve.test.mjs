@@ -99,6 +99,10 @@ try {
   assert.equal(first.generation, 1);
   assert.equal(first.target, 16);
   const before = await imageSrc(page);
+  // The aperture slider is scaled to the scene: the default camera looks 7.05 units away, so its lens
+  // radius goes up to a tenth of that rounded up to 1, 2 or 5 × a power of ten: 1.
+  const lens = page.locator('input[type=range][data-path=\'["camera","lens_radius"]\']');
+  assert.equal(await lens.getAttribute('max'), '1');
 
   // 2. Move a control (the field of view slider): the image changes and accumulation restarts.
   await recordFrames(page);
