@@ -149,8 +149,7 @@ function connectEvents() {
   const events = new EventSource('/api/events');
   events.addEventListener('frame', (event) => {
     const frame = JSON.parse(event.data);
-    $('image').src = 'data:image/png;base64,' + frame.png;
-    delete frame.png;
+    $('image').src = frame.image;  // binary PNG from the server (GET /api/frames/ID.png)
     lastFrame = frame;
     showDisplay(frame);
     const stats = $('stats');

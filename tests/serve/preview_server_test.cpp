@@ -262,11 +262,22 @@ TEST_F(PreviewServerTest, FramesRefineAndAnEditRestartsTheAccumulation) {
         EXPECT_EQ(f["target"], 64);
         EXPECT_EQ(f["width"], 64);
         EXPECT_GE(f["mrays_per_second"].get<double>(), 0.0);
-        EXPECT_FALSE(f["png"].get<std::string>().empty());
+        EXPECT_FALSE(f.contains("png"));  // the picture travels as binary, fetched from "image"
+        EXPECT_EQ(f["image"], "/api/frames/" + std::to_string(f["id"].get<std::uint64_t>()) + ".png");
         return f["samples"] == 64;
     }));
     // The stream sends the latest frame, so early passes may be skipped; the last is complete.
     EXPECT_EQ(samples.back(), 64);
+
+    // The frame's own address serves the binary PNG of the latest frame (no base64), the same bytes as
+    // the Save PNG download.
+    const auto latest = server_->session().latest_frame();
+    auto framed = client().Get(("/api/frames/" + std::to_string(latest->id) + ".png").c_str());
+    ASSERT_TRUE(framed);
+    EXPECT_EQ(framed->status, 200);
+    EXPECT_EQ(framed->get_header_value("Content-Type"), "image/png");
+    EXPECT_TRUE(framed->body == std::string(latest->png.begin(), latest->png.end()));
+    EXPECT_EQ(client().Get("/api/frames/x.png")->status, 404);
 
     // The image download is the complete picture of the new scene.
     auto image = client().Get("/api/image.png");

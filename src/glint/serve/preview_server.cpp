@@ -744,23 +744,15 @@ struct PreviewServer::Impl {
                      res.set_content(reinterpret_cast<const char*>(exr.data()), exr.size(), "image/x-exr");
                  }));
 
+        // A frame's picture, named by the frame event. The latest frame is sent whatever the id asked: a
+        // page that asks for a frame already replaced gets the newer one, which it would show next anyway.
+        http.Get(R"(/api/frames/(\d{1,20})\.png)",
+                 guarded([this](const httplib::Request&, httplib::Response& res) {
+                     send_latest_png(res, false);
+                 }));
+        // Save PNG: the same, as a download.
         http.Get("/api/image.png", guarded([this](const httplib::Request&, httplib::Response& res) {
-                     auto frame = session.latest_frame();
-                     if (!frame) {
-                         send_error(res, 503, "no image yet");
-                         return;
-                     }
-                     res.set_header("Cache-Control", "no-store");
-                     res.set_header("Content-Disposition", "attachment; filename=\"glint.png\"");
-                     // Written from the frame itself, a slice at a time: no copy per download.
-                     const size_t size = frame->png.size();
-                     res.set_content_provider(
-                         size, "image/png",
-                         [frame = std::move(frame)](size_t offset, size_t length, httplib::DataSink& sink) {
-                             const size_t slice = std::min(length, kWriteSlice);
-                             return sink.write(reinterpret_cast<const char*>(frame->png.data()) + offset,
-                                               slice);
-                         });
+                     send_latest_png(res, true);
                  }));
 
         http.Get(
@@ -807,6 +799,27 @@ struct PreviewServer::Impl {
                      res.set_content(asset->bytes.data(), asset->bytes.size(),
                                      std::string(asset->content_type).c_str());
                  }));
+    }
+
+    // The latest frame's PNG, written from the frame itself a slice at a time (no copy per request).
+    void send_latest_png(httplib::Response& res, bool as_download) {
+        auto frame = session.latest_frame();
+        if (!frame) {
+            send_error(res, 503, "no image yet");
+            return;
+        }
+        res.set_header("Cache-Control", "no-store");
+        res.set_header("X-Glint-Frame", std::to_string(frame->id));
+        if (as_download) {
+            res.set_header("Content-Disposition", "attachment; filename=\"glint.png\"");
+        }
+        const size_t size = frame->png.size();
+        res.set_content_provider(
+            size, "image/png",
+            [frame = std::move(frame)](size_t offset, size_t length, httplib::DataSink& sink) {
+                const size_t slice = std::min(length, kWriteSlice);
+                return sink.write(reinterpret_cast<const char*>(frame->png.data()) + offset, slice);
+            });
     }
 
     // Writes the next frame (or a keep-alive comment) to an event stream; false ends the stream.

@@ -17,28 +17,6 @@ namespace {
 // picture of a new view comes back quickly.
 constexpr double kCoarseSamples = 12000;
 
-std::string base64(const std::vector<unsigned char>& bytes) {
-    static const char* digits = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-    std::string out;
-    out.reserve((bytes.size() + 2) / 3 * 4);
-    size_t i = 0;
-    for (; i + 2 < bytes.size(); i += 3) {
-        const unsigned v = (bytes[i] << 16) | (bytes[i + 1] << 8) | bytes[i + 2];
-        out += digits[(v >> 18) & 63];
-        out += digits[(v >> 12) & 63];
-        out += digits[(v >> 6) & 63];
-        out += digits[v & 63];
-    }
-    if (i < bytes.size()) {
-        const unsigned v = (bytes[i] << 16) | (i + 1 < bytes.size() ? bytes[i + 1] << 8 : 0);
-        out += digits[(v >> 18) & 63];
-        out += digits[(v >> 12) & 63];
-        out += i + 1 < bytes.size() ? digits[(v >> 6) & 63] : '=';
-        out += '=';
-    }
-    return out;
-}
-
 // The preview's own limits, checked on the built settings too, so that no reading of a value (a
 // conversion, a default) gets past them; the tree was checked already.
 void check_preview_limits(const SceneDesc& desc, const RenderSettings& s) {
@@ -277,7 +255,9 @@ void PreviewSession::publish_locked(std::shared_ptr<const Image> linear, std::ui
                                {"exposure", frame->display.exposure},
                                {"continuous", continuous_.load()},
                                {"tonemap", tone_curve_table().name_of(frame->display.curve)},
-                               {"png", base64(frame->png)}};
+                               // The picture itself travels as binary PNG, fetched by the page from this
+                               // address (GET /api/frames/ID.png), not as base64 inside the event.
+                               {"image", "/api/frames/" + std::to_string(frame->id) + ".png"}};
         if (stats.nonfinite_samples > 0) {
             // Left out of the picture, as by glint render, and named so that the page can say where.
             data["nonfinite"] = {{"samples", stats.nonfinite_samples},

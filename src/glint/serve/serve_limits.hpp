@@ -18,8 +18,8 @@ namespace glint::preview_limits {
 // Image side: the page shows the image in a browser window; larger pictures are for `glint render`.
 inline constexpr std::int64_t kMaxSide = 4096;
 // Pixels: the preview keeps a film (40 bytes a pixel), an image (12) and the frame's linear copy for
-// Save EXR (12), a PNG and its base64 in each frame event, twice over while an edit replaces the scene:
-// about 125 bytes a pixel, so ~520 MB here.
+// Save EXR (12) and a PNG in each frame, twice over while an edit replaces the scene: about 125 bytes a
+// pixel at most, so ~520 MB here.
 inline constexpr std::int64_t kMaxPixels = 2048 * 2048;
 // Samples per pixel: the preview refines until it has them, with every core busy; past this the wait
 // is hours, which is a job for `glint render`.
