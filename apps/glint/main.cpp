@@ -322,10 +322,8 @@ int run_render(const RenderOptions& options) {
             part.display = settings.display;
             glint::write_file_atomically(output, glint::encode_exr(image, glint::cli::part_attributes(part)));
         } else if (aovs.any()) {
-            const glint::PixelWindow window =
-                settings.crop.value_or(glint::PixelWindow{0, 0, settings.width, settings.height});
-            const std::vector<glint::ImageLayer> layers =
-                glint::render_aovs(*scene.world, scene.view, film, window, stats.samples_per_pixel, aovs);
+            const std::vector<glint::ImageLayer> layers = glint::render_aovs(
+                *scene.world, scene.view, film, settings.rendered_window(), stats.samples_per_pixel, aovs);
             if (glint::image_format_for(output) == glint::ImageFormat::Exr) {
                 glint::write_file_atomically(output,
                                              glint::encode_exr(image, exr_metadata(prepared, stats), layers));

@@ -402,7 +402,7 @@ int run_mpi_render(const RenderOptions& options) {
         return code;
     }
     const RenderSettings& settings = prepared.scene.view.settings;
-    const PixelWindow window = settings.crop.value_or(PixelWindow{0, 0, settings.width, settings.height});
+    const PixelWindow window = settings.rendered_window();
     const int bands = std::min(window.height(), kBandsPerRank * ranks);
     int code = 0;
     if (rank == 0) {

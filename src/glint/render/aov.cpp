@@ -3,6 +3,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <iterator>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
@@ -64,8 +65,29 @@ void put(float* to, const Rgb& c) {
 
 }  // namespace
 
+namespace {
+
+// The AOVs by name, in the order they are written, each with the flag of AovRequest it sets.
+struct AovName {
+    const char* name;
+    bool AovRequest::*flag;
+};
+constexpr AovName kAovNames[] = {{"albedo", &AovRequest::albedo},
+                                 {"normal", &AovRequest::normal},
+                                 {"depth", &AovRequest::depth},
+                                 {"spp", &AovRequest::spp},
+                                 {"variance", &AovRequest::variance}};
+
+}  // namespace
+
 const std::vector<std::string>& aov_names() {
-    static const std::vector<std::string> names = {"albedo", "normal", "depth", "spp", "variance"};
+    static const std::vector<std::string> names = [] {
+        std::vector<std::string> all;
+        for (const AovName& aov : kAovNames) {
+            all.emplace_back(aov.name);
+        }
+        return all;
+    }();
     return names;
 }
 
@@ -74,19 +96,12 @@ AovRequest parse_aov_list(const std::string& list) {
     std::stringstream in(list);
     std::string name;
     while (std::getline(in, name, ',')) {
-        if (name == "albedo") {
-            request.albedo = true;
-        } else if (name == "normal") {
-            request.normal = true;
-        } else if (name == "depth") {
-            request.depth = true;
-        } else if (name == "spp") {
-            request.spp = true;
-        } else if (name == "variance") {
-            request.variance = true;
-        } else {
+        const auto* aov = std::find_if(std::begin(kAovNames), std::end(kAovNames),
+                                       [&](const AovName& a) { return name == a.name; });
+        if (aov == std::end(kAovNames)) {
             throw std::invalid_argument(unknown_name_message("AOV", name, aov_names(), "AOVs"));
         }
+        request.*(aov->flag) = true;
     }
     if (!request.any()) {
         throw std::invalid_argument("no AOV named in '" + list + "' (AOVs: " + join_words(aov_names()) + ")");

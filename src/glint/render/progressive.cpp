@@ -56,7 +56,7 @@ void ProgressiveRender::plan() {
     integrator_ = prepared_integrator_ ? prepared_integrator_.get() : view_.integrator.get();
     target_ = view_.sampler->samples_per_pixel();
     const int size = std::max(1, view_.settings.tile_size);
-    const PixelWindow window = view_.settings.crop.value_or(PixelWindow{0, 0, film_.width(), film_.height()});
+    const PixelWindow window = view_.settings.rendered_window();  // the film has the settings' size
     for (int y = window.y0; y < window.y1; y += size) {
         for (int x = window.x0; x < window.x1; x += size) {
             tiles_.push_back({x, y, std::min(x + size, window.x1), std::min(y + size, window.y1)});

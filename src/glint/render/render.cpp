@@ -47,7 +47,7 @@ RenderStats render(const World& world, const View& view, Film& film, const Rende
         thread_limit.emplace(tbb::global_control::max_allowed_parallelism,
                              static_cast<size_t>(view.settings.threads));
     }
-    const PixelWindow window = view.settings.crop.value_or(PixelWindow{0, 0, film.width(), film.height()});
+    const PixelWindow window = view.settings.rendered_window();
     if (callbacks.resume_after_samples > 0) {
         progressive.resume_after(callbacks.resume_after_samples);
     }

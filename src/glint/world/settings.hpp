@@ -53,6 +53,8 @@ struct RenderSettings {
     // Only these pixels are rendered (`render.crop`); each gets exactly the samples it gets in the
     // full render, so the window is bit for bit that part of the full image. Unset: the whole film.
     std::optional<PixelWindow> crop;
+    // The pixels a render takes: the crop, else the whole image.
+    PixelWindow rendered_window() const { return crop.value_or(PixelWindow{0, 0, width, height}); }
     // Firefly clamp: a sample brighter than this (its largest channel) is scaled down to it, keeping its
     // hue. Biased (it removes energy), so 0, off, by default.
     double clamp = 0;
