@@ -7,6 +7,28 @@
 
 namespace glint {
 
+// The 32 bits of x in reverse order: bit j moves to bit 31 − j.
+constexpr std::uint32_t reverse_bits(std::uint32_t x) {
+    x = (x << 16) | (x >> 16);
+    x = ((x & 0x00ff00ffu) << 8) | ((x & 0xff00ff00u) >> 8);
+    x = ((x & 0x0f0f0f0fu) << 4) | ((x & 0xf0f0f0f0u) >> 4);
+    x = ((x & 0x33333333u) << 2) | ((x & 0xccccccccu) >> 2);
+    x = ((x & 0x55555555u) << 1) | ((x & 0xaaaaaaaau) >> 1);
+    return x;
+}
+
+// The 64 bits of x in reverse order. Reverses two 32-bit values packed in one word for the price of
+// one: the low half reversed lands in the high half and the high half in the low.
+constexpr std::uint64_t reverse_bits64(std::uint64_t x) {
+    x = (x << 32) | (x >> 32);
+    x = ((x & 0x0000ffff0000ffffull) << 16) | ((x & 0xffff0000ffff0000ull) >> 16);
+    x = ((x & 0x00ff00ff00ff00ffull) << 8) | ((x & 0xff00ff00ff00ff00ull) >> 8);
+    x = ((x & 0x0f0f0f0f0f0f0f0full) << 4) | ((x & 0xf0f0f0f0f0f0f0f0ull) >> 4);
+    x = ((x & 0x3333333333333333ull) << 2) | ((x & 0xccccccccccccccccull) >> 2);
+    x = ((x & 0x5555555555555555ull) << 1) | ((x & 0xaaaaaaaaaaaaaaaaull) >> 1);
+    return x;
+}
+
 // SplitMix64's state increment, 2^64/φ: its multiples spread evenly around the 64-bit ring.
 inline constexpr std::uint64_t kGoldenGamma = 0x9e3779b97f4a7c15ull;
 
@@ -95,9 +117,12 @@ class SampleHashes {
     constexpr SampleHashes(const SampleKey& key)
         : pixel_(hash_values(key.seed, key.pixel_x, key.pixel_y)),
           sample_(hash_values(pixel_, key.sample)),
-          sample_index_(key.sample) {}
+          sample_index_(key.sample),
+          sample_index_reversed_(reverse_bits(key.sample)) {}
 
     constexpr std::uint32_t sample() const { return sample_index_; }
+    // reverse_bits(sample()), kept because a low-discrepancy sampler scrambles it in every dimension.
+    constexpr std::uint32_t sample_reversed() const { return sample_index_reversed_; }
     // 64 random bits shared by every sample of the pixel in `dimension`: a pattern's scramble.
     constexpr std::uint64_t pixel_bits(std::uint32_t dimension) const {
         return mix64(pixel_ + dimension * kGoldenGamma);
@@ -111,6 +136,7 @@ class SampleHashes {
     std::uint64_t pixel_;   // hash of (seed, pixel_x, pixel_y)
     std::uint64_t sample_;  // hash of (pixel_, sample)
     std::uint32_t sample_index_;
+    std::uint32_t sample_index_reversed_;
 };
 
 }  // namespace glint

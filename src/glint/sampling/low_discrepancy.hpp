@@ -25,15 +25,6 @@ constexpr double radical_inverse(std::uint32_t base, std::uint64_t i) {
     return result;
 }
 
-constexpr std::uint32_t reverse_bits(std::uint32_t x) {
-    x = (x << 16) | (x >> 16);
-    x = ((x & 0x00ff00ffu) << 8) | ((x & 0xff00ff00u) >> 8);
-    x = ((x & 0x0f0f0f0fu) << 4) | ((x & 0xf0f0f0f0u) >> 4);
-    x = ((x & 0x33333333u) << 2) | ((x & 0xccccccccu) >> 2);
-    x = ((x & 0x55555555u) << 1) | ((x & 0xaaaaaaaau) >> 1);
-    return x;
-}
-
 // Sobol's first dimension as 32 bits of binary fraction: the van der Corput sequence Φ₂(i).
 constexpr std::uint32_t sobol_dimension0(std::uint32_t i) {
     return reverse_bits(i);
