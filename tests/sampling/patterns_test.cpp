@@ -15,6 +15,7 @@
 #include "glint/sampling/multijittered.hpp"
 #include "glint/sampling/pattern_stats.hpp"
 #include "glint/sampling/sampler.hpp"
+#include "glint/sampling/sobol.hpp"
 
 namespace glint {
 namespace {
@@ -153,6 +154,31 @@ TEST(SamplePatterns, LowDiscrepancyPatternsAreBase2Nets) {
     }
     EXPECT_FALSE(is_base2_net(points_of("random", 256)));
     EXPECT_FALSE(is_base2_net(points_of("jittered", 256)));
+}
+
+TEST(SamplePatterns, SobolStratifiesOnlyItsFirstDimensions) {
+    // Dimensions 0 … 5 (film, lens, the first bounces) are nets; later ones are the random pattern's
+    // independent points, which with 256 points are no net.
+    const auto sobol = make_sampler("sobol", 256);
+    const auto random = make_sampler("random", 256);
+    for (std::uint32_t dimension = 0; dimension < 12; ++dimension) {
+        const SampleKey key{7, 3, 5, 0};
+        const std::vector<Point2> points = pattern_points(*sobol, key, dimension);
+        if (dimension < SobolSampler::kStratifiedDimensions) {
+            EXPECT_TRUE(is_base2_net(points)) << dimension;
+        } else {
+            EXPECT_FALSE(is_base2_net(points)) << dimension;
+            const std::vector<Point2> independent = pattern_points(*random, key, dimension);
+            ASSERT_EQ(points.size(), independent.size());
+            for (std::size_t i = 0; i < points.size(); ++i) {
+                EXPECT_EQ(points[i].x, independent[i].x) << dimension << " " << i;
+                EXPECT_EQ(points[i].y, independent[i].y) << dimension << " " << i;
+                SampleKey one = key;
+                one.sample = static_cast<std::uint32_t>(i);
+                EXPECT_EQ(sobol->sample_1d(one, dimension), points[i].x);
+            }
+        }
+    }
 }
 
 TEST(SamplePatterns, UnscrambledSobolFirstPointsAreANet) {

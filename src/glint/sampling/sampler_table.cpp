@@ -30,7 +30,8 @@ const NameTable<SamplerEntry>& sampler_table() {
          [](std::uint32_t n) { return std::make_unique<HammersleySampler>(n); }},
         {"halton", "(Φ₂(i), Φ₃(i)), Owen-scrambled per pixel",
          [](std::uint32_t n) { return std::make_unique<HaltonSampler>(n); }},
-        {"sobol", "the first two Sobol dimensions, Owen-scrambled per pixel (Burley 2020)",
+        {"sobol",
+         "the first two Sobol dimensions, Owen-scrambled per pixel (Burley 2020); random past the sixth",
          [](std::uint32_t n) { return std::make_unique<SobolSampler>(n); }},
     };
     return table;

@@ -15,6 +15,11 @@ std::uint32_t scrambled_index(const SampleHashes& key, std::uint64_t seeds) {
 }  // namespace
 
 Point2 SobolSampler::sample_2d(const SampleHashes& key, std::uint32_t dimension) const {
+    if (dimension >= kStratifiedDimensions) {
+        const std::uint64_t bits = key.sample_bits(dimension);
+        return {bits_to_unit(static_cast<std::uint32_t>(bits)),
+                bits_to_unit(static_cast<std::uint32_t>(bits >> 32))};
+    }
     const std::uint64_t seeds = key.pixel_bits(dimension);
     const std::uint32_t index = scrambled_index(key, seeds);
     // The point's two seeds, drawn while the index is scrambled.
@@ -32,6 +37,9 @@ Point2 SobolSampler::sample_2d(const SampleHashes& key, std::uint32_t dimension)
 
 double SobolSampler::sample_1d(const SampleHashes& key, std::uint32_t dimension) const {
     // sample_2d's x without its y: the point's first dimension, stratified in n intervals.
+    if (dimension >= kStratifiedDimensions) {
+        return unit_pair(key.sample_bits(dimension)).x;
+    }
     const std::uint64_t seeds = key.pixel_bits(dimension);
     const std::uint32_t index = scrambled_index(key, seeds);
     return bits_to_unit(owen_scramble_reversed(index, static_cast<std::uint32_t>(mix64(seeds))));
