@@ -93,6 +93,10 @@ constexpr std::uint32_t kFewestSpheresForFour = 3;
 // is the very double the scalar function computes.
 struct SphereLanes {
     alignas(32) double t[4];
+    // A rectangle lane's hit point and (a, b), as Rectangle::solve finds them: read only for rectangle
+    // lanes that are hit, so that the nearest one's Hit is filled without solving again.
+    alignas(32) double point[3][4];
+    alignas(32) double ab[2][4];
     unsigned sphere;  // lanes whose record is a sphere (radius > 0)
     unsigned hit;     // sphere (and rectangle) lanes hit with t in (0, t_limit)
     unsigned other;   // lanes of other shapes (set by test_group)
@@ -181,13 +185,16 @@ __attribute__((target("avx2"))) inline SphereLanes test_sphere_lanes(const doubl
 }
 
 // Four rectangles of a block tested against a ray at once: Rectangle::solve in each lane, operation for
-// operation in the same order (no FMA, as above), so each lane's t is the scalar function's. Returns the
-// lanes hit with t in (0, t_limit); their t's replace those lanes of `t_lanes`, the others are kept.
+// operation in the same order (no FMA, as above), so each lane's t, point and (a, b) are the scalar
+// function's. Returns the lanes hit with t in (0, t_limit); their t's replace those lanes of `t_lanes`,
+// the others are kept. `point` and `ab` get every lane's values when any lane is hit.
 // (Blended and stored whole: a masked store, whose result the lane walk then reads back, stalled
 // the loads on AMD's Zen and made the Cornell box 4 % slower.)
 template <class Block>
 __attribute__((target("avx2"))) inline unsigned test_rectangle_lanes(const Block& block, const Ray& ray,
-                                                                     double t_limit, double* t_lanes) {
+                                                                     double t_limit, double* t_lanes,
+                                                                     double (&point)[3][4],
+                                                                     double (&ab)[2][4]) {
     const __m256d nx = load(block.normal[0]), ny = load(block.normal[1]), nz = load(block.normal[2]);
     const __m256d cx = load(block.corner[0]), cy = load(block.corner[1]), cz = load(block.corner[2]);
     const __m256d ox = _mm256_set1_pd(ray.origin.x);
@@ -225,6 +232,11 @@ __attribute__((target("avx2"))) inline unsigned test_rectangle_lanes(const Block
     hit = _mm256_and_pd(hit, _mm256_cmp_pd(b, zero, _CMP_NLT_UQ));
     hit = _mm256_and_pd(hit, _mm256_cmp_pd(b, one, _CMP_NGT_UQ));
     _mm256_store_pd(t_lanes, _mm256_blendv_pd(_mm256_load_pd(t_lanes), t, hit));
+    _mm256_store_pd(point[0], px);
+    _mm256_store_pd(point[1], py);
+    _mm256_store_pd(point[2], pz);
+    _mm256_store_pd(ab[0], a);
+    _mm256_store_pd(ab[1], b);
     return static_cast<unsigned>(_mm256_movemask_pd(hit));
 }
 
@@ -244,12 +256,17 @@ __attribute__((target("avx2"))) inline SphereLanes test_group(const ShapeList& l
         return lanes;
     }
     const auto& block = list.rectangles[i / 4];
-    SphereLanes lanes{};  // t's of 0 in lanes that are not hit
+    // t's of 0 in lanes that are not hit; the rectangles' points are left unset, not zeroed (that alone
+    // cost more than solving the nearest rectangle again).
+    SphereLanes lanes;
+    _mm256_store_pd(lanes.t, _mm256_setzero_pd());
+    lanes.sphere = lanes.hit = lanes.other = 0;
     if ((block.spheres & in_range) != 0) {
         lanes = test_sphere_lanes(reinterpret_cast<const double*>(list.spheres.data() + i), ray, t_limit);
     }
     if ((block.rectangles & in_range) != 0) {
-        lanes.hit |= test_rectangle_lanes(block, ray, t_limit, lanes.t) & block.rectangles;
+        lanes.hit |=
+            test_rectangle_lanes(block, ray, t_limit, lanes.t, lanes.point, lanes.ab) & block.rectangles;
     }
     const unsigned inline_lanes = block.spheres | block.rectangles;
     lanes.hit &= in_range;
@@ -316,7 +333,8 @@ bool BvhAccelerator::intersect_with(const Ray& ray, double t_max, Hit& hit) cons
     std::uint32_t nearest_sphere = 0;
     double nearest_sphere_t = 0;
     bool nearest_is_rectangle = false;
-    const double ray_t_max = t_max;
+    Vec3 nearest_rectangle_point;  // when nearest_is_rectangle: its point and (a, b) from the lanes
+    Point2 nearest_rectangle_ab;
     const auto take_sphere = [&](const ShapeList& list, std::uint32_t i, double t, double& t_limit) {
         t_limit = t;
         nearest_sphere_t = t;
@@ -363,6 +381,11 @@ bool BvhAccelerator::intersect_with(const Ray& ray, double t_max, Hit& hit) cons
                         take_sphere(list, i + lane, lanes.t[lane], t_limit);
                         nearest_is_rectangle =
                             list.with_rectangles && ((list.rectangles[i / 4].rectangles >> lane) & 1) != 0;
+                        if (nearest_is_rectangle) {
+                            nearest_rectangle_point = {lanes.point[0][lane], lanes.point[1][lane],
+                                                       lanes.point[2][lane]};
+                            nearest_rectangle_ab = {lanes.ab[0][lane], lanes.ab[1][lane]};
+                        }
                         found = true;
                     }
                 }
@@ -393,7 +416,8 @@ bool BvhAccelerator::intersect_with(const Ray& ray, double t_max, Hit& hit) cons
             });
     }
     if (kFourSpheres && nearest_is_rectangle) {
-        nearest_list->shapes[nearest_sphere]->intersect(ray, ray_t_max, hit);
+        static_cast<const Rectangle*>(nearest_list->shapes[nearest_sphere])
+            ->fill_hit(nearest_sphere_t, nearest_rectangle_point, nearest_rectangle_ab, hit);
         hit.primitive = nearest_list->scene_index[nearest_sphere];
     } else if (nearest_list != nullptr) {
         // The sphere's own intersect would find the same t; it fills the rest of the Hit from it.

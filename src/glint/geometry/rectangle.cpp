@@ -50,14 +50,18 @@ bool Rectangle::intersect(const Ray& ray, double t_max, Hit& hit) const {
     if (t == kInf) {
         return false;
     }
+    fill_hit(t, p, ab, hit);
+    return true;
+}
+
+void Rectangle::fill_hit(double t, const Vec3& point, Point2 ab, Hit& hit) const {
     hit.t = t;
-    hit.point = p;
+    hit.point = point;
     hit.normal = normal_;
     hit.shading_normal = normal_;
     hit.uv = ab;
-    hit.error = kHitRelativeError * (max_component(abs(p)) + max_component(abs(corner_)) +
+    hit.error = kHitRelativeError * (max_component(abs(point)) + max_component(abs(corner_)) +
                                      max_component(abs(edge1_)) + max_component(abs(edge2_)));
-    return true;
 }
 
 bool Rectangle::occluded(const Ray& ray, double t_max) const {

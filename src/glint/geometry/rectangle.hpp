@@ -29,6 +29,9 @@ class Rectangle final : public Shape {
     const Vec3& normal() const { return normal_; }
     const Vec3& dual1() const { return dual1_; }
     const Vec3& dual2() const { return dual2_; }
+    // The Hit of a hit at t, whose point and (a, b) solve() found (or the flat list's four-at-a-time
+    // repetition of it): what intersect() records.
+    void fill_hit(double t, const Vec3& point, Point2 ab, Hit& hit) const;
 
   private:
     // t of the hit within (0, t_max) and inside the parallelogram, or kInf; `ab` are its (a, b).
