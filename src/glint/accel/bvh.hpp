@@ -84,6 +84,10 @@ class BvhAccelerator final : public Accelerator {
     Vec3 culling_inverse(const Ray& ray) const;
     bool intersect_avx2(const Ray& ray, double t_max, Hit& hit) const;
     bool occluded_avx2(const Ray& ray, double t_max) const;
+    // intersect_with<false> and occluded_with<false>, kept out of line: inlined into intersect(), their
+    // set-up was paid by every ray of the AVX2 path too (the Cornell box's, 15 instructions a ray).
+    bool intersect_one_at_a_time(const Ray& ray, double t_max, Hit& hit) const;
+    bool occluded_one_at_a_time(const Ray& ray, double t_max) const;
 
     ShapeList leaves_;                 // the tree's, in its leaf order
     ShapeList direct_;                 // tested for every ray: unbounded first, then by scene index

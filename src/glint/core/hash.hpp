@@ -115,10 +115,16 @@ class SampleHashes {
     // Implicit, so that a sampler can be asked with a plain SampleKey (tests, tools); the renderer builds
     // one per sample and hands it down the whole path.
     constexpr SampleHashes(const SampleKey& key)
-        : pixel_(hash_values(key.seed, key.pixel_x, key.pixel_y)),
-          sample_(hash_values(pixel_, key.sample)),
-          sample_index_(key.sample),
-          sample_index_reversed_(reverse_bits(key.sample)) {}
+        : SampleHashes(pixel_hash(key.seed, key.pixel_x, key.pixel_y), key.sample) {}
+    // From the pixel's hash, computed once for all of its samples by the render loop.
+    constexpr SampleHashes(std::uint64_t pixel_hash, std::uint32_t sample)
+        : pixel_(pixel_hash),
+          sample_(hash_values(pixel_hash, sample)),
+          sample_index_(sample),
+          sample_index_reversed_(reverse_bits(sample)) {}
+    static constexpr std::uint64_t pixel_hash(std::uint64_t seed, std::uint32_t x, std::uint32_t y) {
+        return hash_values(seed, x, y);
+    }
 
     constexpr std::uint32_t sample() const { return sample_index_; }
     // reverse_bits(sample()), kept because a low-discrepancy sampler scrambles it in every dimension.

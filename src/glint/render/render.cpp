@@ -23,9 +23,16 @@ std::optional<Ray> camera_ray(const View& view, const SampleHashes& key, int x, 
 
 Rgb render_sample(const World& world, const View& view, const Integrator& integrator, int x, int y,
                   std::uint32_t sample, RayCounters& rays) {
+    return render_sample(world, view, integrator, x, y,
+                         SampleHashes::pixel_hash(view.settings.seed, static_cast<std::uint32_t>(x),
+                                                  static_cast<std::uint32_t>(y)),
+                         sample, rays);
+}
+
+Rgb render_sample(const World& world, const View& view, const Integrator& integrator, int x, int y,
+                  std::uint64_t pixel_hash, std::uint32_t sample, RayCounters& rays) {
     // Hashed once here; every dimension of the path then costs the sampler one mix.
-    const SampleHashes key(
-        SampleKey{view.settings.seed, static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y), sample});
+    const SampleHashes key(pixel_hash, sample);
     const std::optional<Ray> ray = camera_ray(view, key, x, y);
     if (!ray) {
         return Rgb{};  // outside the camera's image (a fisheye's corners): black, nothing traced
