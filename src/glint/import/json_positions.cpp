@@ -2,7 +2,8 @@
 // reads its input through an iterator, and this one counts the bytes read: when an event arrives, the
 // parser has read its token (and, after a number, the one byte that ends it). So a value or key begins
 // at the first byte after the previous event's end that is not whitespace or a ',' or ':' between
-// tokens.
+// tokens. Lines are counted as the events arrive, in the order of the text, so the text is scanned once
+// whatever the number of values.
 #include "glint/import/json_positions.hpp"
 
 #include <algorithm>
@@ -10,6 +11,7 @@
 #include <iterator>
 #include <limits>
 #include <nlohmann/json.hpp>
+#include <vector>
 
 namespace glint {
 namespace {
@@ -51,11 +53,50 @@ class CountingIterator {
 
 using Json = nlohmann::json;
 
+using Place = JsonPositions::Place;
+
+void append_pointer_token(std::string& pointer, std::string_view key) {
+    for (const char c : key) {
+        if (c == '~') {
+            pointer += "~0";
+        } else if (c == '/') {
+            pointer += "~1";
+        } else {
+            pointer += c;
+        }
+    }
+}
+
+// The place of an offset, counting the newlines from the last one asked (offsets come in increasing
+// order; an earlier one is counted from the start).
+class LineCounter {
+  public:
+    explicit LineCounter(std::string_view text) : text_(text) {}
+
+    Place place(std::size_t offset) {
+        if (offset < at_.offset) {
+            at_ = {};
+        }
+        offset = std::min(offset, text_.size());
+        while (const void* newline = std::memchr(text_.data() + at_.offset, '\n', offset - at_.offset)) {
+            at_.offset = at_.line_start =
+                static_cast<std::size_t>(static_cast<const char*>(newline) - text_.data()) + 1;
+            ++at_.line;
+        }
+        at_.offset = offset;
+        return at_;
+    }
+
+  private:
+    std::string_view text_;
+    Place at_;
+};
+
 class PositionRecorder : public nlohmann::json_sax<Json> {
   public:
     PositionRecorder(std::string_view text, const std::size_t& read,
-                     std::unordered_map<std::string, std::size_t>& offsets)
-        : text_(text), read_(read), offsets_(offsets) {
+                     std::vector<JsonPositions::KeyedPlace>& places)
+        : text_(text), read_(read), places_(places), lines_(text) {
         if (text.size() >= 3 && std::memcmp(text.data(), "\xEF\xBB\xBF", 3) == 0) {
             last_read_ = 3;  // a byte order mark, which the parser skips
         }
@@ -77,9 +118,9 @@ class PositionRecorder : public nlohmann::json_sax<Json> {
     bool key(string_t& name) override {
         pointer_.resize(frames_.back().pointer_length);
         pointer_ += '/';
-        pointer_ += json_pointer_token(name);
+        append_pointer_token(pointer_, name);
         if (frames_.size() <= kMaxDepth) {
-            offsets_.emplace(pointer_, token_start());
+            places_.push_back({JsonPositions::key_of(pointer_), lines_.place(token_start())});
         }
         last_read_ = read_;
         return true;
@@ -88,12 +129,12 @@ class PositionRecorder : public nlohmann::json_sax<Json> {
     bool parse_error(std::size_t position, const std::string&,
                      const nlohmann::detail::exception& error) override {
         // `position` counts the bytes read, the offending one included (one past the end at the end).
-        error_offset_ = std::min(position > 0 ? position - 1 : 0, text_.size());
+        error_place_ = lines_.place(position > 0 ? position - 1 : 0);
         error_ = error.what();
         return false;
     }
 
-    std::size_t error_offset() const { return error_offset_; }
+    const Place& error_place() const { return error_place_; }
     const std::string& error() const { return error_; }
 
   private:
@@ -108,13 +149,13 @@ class PositionRecorder : public nlohmann::json_sax<Json> {
     void begin_value(bool container) {
         if (frames_.empty()) {
             pointer_.clear();
-            offsets_.emplace(pointer_, token_start());
+            places_.push_back({JsonPositions::key_of(pointer_), lines_.place(token_start())});
         } else if (Frame& frame = frames_.back(); frame.array) {
             pointer_.resize(frame.pointer_length);
             pointer_ += '/';
             pointer_ += std::to_string(frame.next_index++);
             if (frames_.size() <= kMaxDepth && (container || frames_.size() <= 2)) {
-                offsets_.emplace(pointer_, token_start());
+                places_.push_back({JsonPositions::key_of(pointer_), lines_.place(token_start())});
             }
         }
         last_read_ = read_;
@@ -148,10 +189,11 @@ class PositionRecorder : public nlohmann::json_sax<Json> {
     std::string_view text_;
     const std::size_t& read_;
     std::size_t last_read_ = 0;
-    std::unordered_map<std::string, std::size_t>& offsets_;
+    std::vector<JsonPositions::KeyedPlace>& places_;
+    LineCounter lines_;
     std::vector<Frame> frames_;
     std::string pointer_;
-    std::size_t error_offset_ = 0;
+    Place error_place_;
     std::string error_;
 };
 
@@ -175,44 +217,39 @@ std::string parse_error_reason(const std::string& what) {
 
 std::string json_pointer_token(std::string_view key) {
     std::string token;
-    token.reserve(key.size());
-    for (const char c : key) {
-        if (c == '~') {
-            token += "~0";
-        } else if (c == '/') {
-            token += "~1";
-        } else {
-            token += c;
-        }
-    }
+    append_pointer_token(token, key);
     return token;
 }
 
 JsonPositions::JsonPositions(std::shared_ptr<const SourceFile> source, SourcePos whole_file)
     : whole_file_(std::move(whole_file)), source_(std::move(source)) {
     const std::string& text = source_->text;
-    line_starts_.push_back(0);
-    for (const char *at = text.data(), *end = text.data() + text.size();
-         (at = static_cast<const char*>(std::memchr(at, '\n', static_cast<std::size_t>(end - at)))) !=
-         nullptr;) {
-        ++at;
-        line_starts_.push_back(static_cast<std::size_t>(at - text.data()));
-    }
     std::size_t read = 0;
-    PositionRecorder recorder(text, read, offsets_);
+    PositionRecorder recorder(text, read, places_);
     const CountingIterator first(text.data(), text.data(), &read);
     const CountingIterator last(text.data(), text.data() + text.size(), &read);
     if (!Json::sax_parse(first, last, &recorder)) {
-        throw SceneError(position_of_offset(recorder.error_offset()),
+        throw SceneError(position_of(recorder.error_place()),
                          "malformed JSON: " + parse_error_reason(recorder.error()));
     }
+    // By key; of a key given twice (JSON allows it), the first.
+    std::stable_sort(places_.begin(), places_.end(),
+                     [](const KeyedPlace& a, const KeyedPlace& b) { return a.key < b.key; });
+    places_.shrink_to_fit();
+}
+
+const JsonPositions::Place* JsonPositions::find(std::string_view pointer) const {
+    const std::uint64_t key = key_of(pointer);
+    const auto found = std::lower_bound(places_.begin(), places_.end(), key,
+                                        [](const KeyedPlace& a, std::uint64_t k) { return a.key < k; });
+    return found != places_.end() && found->key == key ? &found->place : nullptr;
 }
 
 SourcePos JsonPositions::at(std::string_view pointer) const {
     std::string key(pointer);
     while (true) {
-        if (const auto found = offsets_.find(key); found != offsets_.end()) {
-            return position_of_offset(found->second);
+        if (const Place* place = find(key); place != nullptr) {
+            return position_of(*place);
         }
         const std::size_t slash = key.rfind('/');
         if (slash == std::string::npos) {
@@ -222,12 +259,19 @@ SourcePos JsonPositions::at(std::string_view pointer) const {
     }
 }
 
-SourcePos JsonPositions::position_of_offset(std::size_t offset) const {
-    const auto line = std::upper_bound(line_starts_.begin(), line_starts_.end(), offset) - 1;
+SourcePos JsonPositions::position_of(const Place& place) const {
+    std::shared_ptr<const SourceFile>& line = lines_[place.line];
+    if (!line) {
+        const std::string_view text = source_->text;
+        const std::size_t end = std::min(text.find('\n', place.line_start), text.size());
+        line = place.line == 1 ? source_
+                               : SourceFile::excerpt(source_->path, source_->first_line + place.line - 1,
+                                                     text.substr(place.line_start, end - place.line_start));
+    }
     // A 2 GiB file on one line has columns up to 2^31, one more than an int holds.
-    const std::size_t column = std::min<std::size_t>(offset - *line + 1, std::numeric_limits<int>::max());
-    return {source_, source_->first_line + static_cast<int>(line - line_starts_.begin()),
-            static_cast<int>(column)};
+    const std::size_t column =
+        std::min<std::size_t>(place.offset - place.line_start + 1, std::numeric_limits<int>::max());
+    return {line, source_->first_line + place.line - 1, static_cast<int>(column)};
 }
 
 }  // namespace glint
