@@ -216,6 +216,16 @@ TEST(GltfPositions, AGlbsWarningsAreAtTheirElementInItsJsonChunk) {
     dir.write("model.glb", test::glb(text, test::square_bytes()));
     const SceneDesc desc = load_scene(dir / "model.glb");
     expect_warnings_at_their_elements(desc, text, (dir / "model.glb").string() + " (JSON chunk)");
+    // Malformed JSON in the chunk: at its line and column there (the 'x' where a value should be).
+    const std::string broken = "{\"asset\": {\"version\": \"2.0\"},\n \"nodes\": x}";
+    dir.write("broken.glb", test::glb(broken, test::square_bytes()));
+    try {
+        load_scene(dir / "broken.glb");
+        FAIL() << "malformed JSON was read";
+    } catch (const SceneError& e) {
+        expect_at(e.position(), position_of(broken, "x}"), e.what());
+        EXPECT_EQ(e.position().file->path, (dir / "broken.glb").string() + " (JSON chunk)");
+    }
 }
 
 // Importing `text` (as `name` in `dir`) is an error at `expected` whose message holds `reason`.

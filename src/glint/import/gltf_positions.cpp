@@ -18,42 +18,49 @@ namespace {
 // A .glb: a 12-byte header, then chunks of (length, type, data); the JSON chunk comes first.
 constexpr std::size_t kGlbJsonOffset = 20;
 
-std::uint32_t little_endian_u32(const std::string& bytes, std::size_t at) {
+std::uint32_t little_endian_u32(const char* bytes) {
     std::uint32_t value = 0;
     for (std::size_t i = 0; i < 4; ++i) {
-        value |= static_cast<std::uint32_t>(static_cast<unsigned char>(bytes[at + i])) << (8 * i);
+        value |= static_cast<std::uint32_t>(static_cast<unsigned char>(bytes[i])) << (8 * i);
     }
     return value;
 }
 
-// The JSON text of the file's bytes, and the name its positions go by; nothing for a .glb without a
-// whole JSON chunk (tinygltf says what is wrong with it).
-std::optional<std::pair<std::string, std::string>> json_text(const std::string& path, std::string bytes) {
-    if (bytes.size() < 4 || bytes.compare(0, 4, "glTF") != 0) {
-        return std::pair{path, std::move(bytes)};
-    }
-    if (bytes.size() < kGlbJsonOffset || bytes.compare(16, 4, "JSON") != 0) {
-        return std::nullopt;
-    }
-    const std::uint32_t length = little_endian_u32(bytes, 12);
-    if (length > bytes.size() - kGlbJsonOffset) {
-        return std::nullopt;
-    }
-    return std::pair{path + " (JSON chunk)", bytes.substr(kGlbJsonOffset, length)};
-}
-
-std::optional<std::string> read_bytes(const std::filesystem::path& path) {
+// A file's JSON text, as a SourceFile: a .gltf whole; of a .glb its JSON chunk alone (not the
+// binary chunk after it, which may be most of the file), under the name "model.glb (JSON chunk)".
+// Nothing when the file cannot be read, or is a .glb without a whole JSON chunk (tinygltf says
+// what is wrong with it).
+std::shared_ptr<const SourceFile> read_json_text(const std::filesystem::path& path) {
     std::error_code error;
     const std::uintmax_t size = std::filesystem::file_size(path, error);
     if (error || size > kMaxGltfFileBytes) {
-        return std::nullopt;
+        return nullptr;
     }
     std::ifstream in(path, std::ios::binary);
-    std::string bytes(static_cast<std::size_t>(size), '\0');
-    if (!in.read(bytes.data(), static_cast<std::streamsize>(size))) {
-        return std::nullopt;
+    std::string header(std::min<std::size_t>(static_cast<std::size_t>(size), kGlbJsonOffset), '\0');
+    if (!in.read(header.data(), static_cast<std::streamsize>(header.size()))) {
+        return nullptr;
     }
-    return bytes;
+    if (header.size() < 4 || header.compare(0, 4, "glTF") != 0) {
+        std::string text(static_cast<std::size_t>(size), '\0');
+        text.replace(0, header.size(), header);
+        if (!in.read(text.data() + header.size(), static_cast<std::streamsize>(size - header.size()))) {
+            return nullptr;
+        }
+        return SourceFile::from_text(path.string(), text);
+    }
+    if (header.size() < kGlbJsonOffset || header.compare(16, 4, "JSON") != 0) {
+        return nullptr;
+    }
+    const std::uint32_t length = little_endian_u32(header.data() + 12);
+    if (length > size - kGlbJsonOffset) {
+        return nullptr;
+    }
+    std::string text(length, '\0');
+    if (!in.read(text.data(), static_cast<std::streamsize>(length))) {
+        return nullptr;
+    }
+    return SourceFile::from_text(path.string() + " (JSON chunk)", text);
 }
 
 std::string lower(std::string text) {
@@ -146,12 +153,10 @@ PositionedGltf load_positioned_gltf(const std::filesystem::path& path, const Sou
         file = load_gltf_file(path, whole_file);
     } catch (const SceneError& error) {
         // Read again, to place the reason: malformed JSON throws from JsonPositions.
-        const std::optional<std::string> bytes = read_bytes(path);
-        const auto text = bytes ? json_text(path.string(), *bytes) : std::nullopt;
-        if (!text) {
+        const std::shared_ptr<const SourceFile> source = read_json_text(path);
+        if (!source) {
             throw;
         }
-        const auto source = SourceFile::from_text(text->first, text->second);
         std::optional<JsonPositions> positions;
         try {
             positions.emplace(source, whole_file);
@@ -170,12 +175,11 @@ PositionedGltf load_positioned_gltf(const std::filesystem::path& path, const Sou
     if (file->source && !file->source->text.empty()) {  // a .gltf: its text is kept for positions
         return {file, JsonPositions(file->source, whole_file)};
     }
-    const std::optional<std::string> bytes = read_bytes(path);
-    const auto text = bytes ? json_text(path.string(), *bytes) : std::nullopt;
-    if (!text) {  // tinygltf read it, so this is a file changed since: no positions, no harm
+    const std::shared_ptr<const SourceFile> source = read_json_text(path);
+    if (!source) {  // tinygltf read it, so this is a file changed since: no positions, no harm
         return {file, JsonPositions(whole_file)};
     }
-    return {file, JsonPositions(SourceFile::from_text(text->first, text->second), whole_file)};
+    return {file, JsonPositions(source, whole_file)};
 }
 
 }  // namespace glint
