@@ -21,15 +21,7 @@ namespace {
 
 using nlohmann::json;
 
-// The bytes of a unit square in the z = 0 plane (positions, then 16-bit indices), little-endian.
-std::string square_bytes() {
-    const float positions[] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
-    const std::uint16_t indices[] = {0, 1, 2, 0, 2, 3};
-    std::string bytes(sizeof positions + sizeof indices, '\0');
-    std::memcpy(bytes.data(), positions, sizeof positions);
-    std::memcpy(bytes.data() + sizeof positions, indices, sizeof indices);
-    return bytes;
-}
+using test::square_bytes;
 
 using test::base64;
 
@@ -70,15 +62,8 @@ std::string data_uri() {
     return "data:application/octet-stream;base64," + base64(square_bytes());
 }
 
-// A .glb: header, the JSON chunk (padded with spaces) and the binary chunk (padded with zeros).
 std::string glb(const json& model, std::string binary) {
-    std::string text = model.dump();
-    text.resize((text.size() + 3) / 4 * 4, ' ');
-    binary.resize((binary.size() + 3) / 4 * 4, '\0');
-    const auto u32 = [](std::uint32_t v) { return std::string(reinterpret_cast<const char*>(&v), 4); };
-    const auto total = static_cast<std::uint32_t>(12 + 8 + text.size() + 8 + binary.size());
-    return "glTF" + u32(2) + u32(total) + u32(static_cast<std::uint32_t>(text.size())) + "JSON" + text +
-           u32(static_cast<std::uint32_t>(binary.size())) + std::string("BIN\0", 4) + binary;
+    return test::glb(model.dump(), std::move(binary));
 }
 
 // Where a ray along −x... finds the square: the scene's one object, hit from `origin` along `dir`.

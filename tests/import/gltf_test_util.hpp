@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -27,6 +28,28 @@ inline std::string base64(const std::string& bytes) {
         out += i + 2 < bytes.size() ? alphabet[n & 63] : '=';
     }
     return out;
+}
+
+// The bytes of a unit square in the z = 0 plane (positions, then 16-bit indices), little-endian: 60
+// bytes, the positions in the first 48 (unit_square_positions_accessor), the indices in the last 12.
+inline std::string square_bytes() {
+    const float positions[] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
+    const std::uint16_t indices[] = {0, 1, 2, 0, 2, 3};
+    std::string bytes(sizeof positions + sizeof indices, '\0');
+    std::memcpy(bytes.data(), positions, sizeof positions);
+    std::memcpy(bytes.data() + sizeof positions, indices, sizeof indices);
+    return bytes;
+}
+
+// A .glb of the JSON `text`: header, the JSON chunk (padded with spaces) and the binary chunk (padded
+// with zeros).
+inline std::string glb(std::string text, std::string binary) {
+    text.resize((text.size() + 3) / 4 * 4, ' ');
+    binary.resize((binary.size() + 3) / 4 * 4, '\0');
+    const auto u32 = [](std::uint32_t v) { return std::string(reinterpret_cast<const char*>(&v), 4); };
+    const auto total = static_cast<std::uint32_t>(12 + 8 + text.size() + 8 + binary.size());
+    return "glTF" + u32(2) + u32(total) + u32(static_cast<std::uint32_t>(text.size())) + "JSON" + text +
+           u32(static_cast<std::uint32_t>(binary.size())) + std::string("BIN\0", 4) + binary;
 }
 
 // The accessor of the unit square's four corners, (0,0,0) (1,0,0) (1,1,0) (0,1,0), as floats in buffer
