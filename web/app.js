@@ -180,6 +180,8 @@ const ranges = {
   fov: [1, 150, 0.5], ior: [1, 3, 0.001], roughness: [0, 1, 0.01], albedo: [0, 1, 0.01],
   lens_radius: [0, 0.5, 0.005], f_stop: [0.7, 32, 0.1], max_depth: [1, 64, 1], exposure: [-5, 5, 0.1],
   metallic: [0, 1, 0.01], transmission: [0, 1, 0.01], fuzz: [0, 1, 0.01],
+  // A spot light's cone (degrees; wider cones through the number box) and an environment map's turn.
+  angle: [0.5, 90, 0.5], falloff_angle: [0, 90, 0.5], rotation: [-180, 180, 1],
 };
 const iorPresets = [['water', 1.333], ['glass', 1.5], ['diamond', 2.417]];
 const colourKeys = /albedo|colou?r|reflectance|tint|specular|diffuse|emission|radiance|intensity|irradiance|background|transmittance/;
@@ -397,14 +399,19 @@ function buildCamera() {
 const isMap = (v) => v !== null && typeof v === 'object' && !Array.isArray(v);
 
 // The fields of a material or a light at `path`: its type, from the server's table `types`, then each
-// key; a map inside it (a texture, an area light's shape, a gradient sky) one level down, as
-// "shape.radius".
+// key; a map inside it (a texture, an area light's shape, a gradient sky) one level down, its keys
+// indented under its name.
 function typedMapFields(box, path, map, types) {
   box.append(field('type', [selectInput([...path, 'type'], map.type, types)]));
   for (const [key, value] of Object.entries(map)) {
     if (key === 'type') continue;
     if (isMap(value)) {
-      for (const [inner, v] of Object.entries(value)) box.append(field(`${key}.${inner}`, valueControl([...path, key, inner], v)));
+      box.append(field(key, []));
+      for (const [inner, v] of Object.entries(value)) {
+        const row = field(inner, valueControl([...path, key, inner], v), `${key}.${inner}`);
+        row.classList.add('nested');
+        box.append(row);
+      }
     } else {
       box.append(field(key, valueControl([...path, key], value)));
     }
@@ -433,7 +440,6 @@ function buildMaterials() {
       [swatch(['objects', i, 'material']), `${object.type ?? 'object'} ${i}`, el('span', {class: 'inline-tag', text: 'inline'})]));
     typedMapFields(box, ['objects', i, 'material'], object.material, state.material_types);
   }
-  updateSwatches();
 }
 
 function buildLights() {
@@ -464,6 +470,7 @@ function buildControls() {
   buildCamera();
   buildMaterials();
   buildLights();
+  updateSwatches();
 }
 
 // Puts the scene's current values into the controls, except the one the user is typing in.
