@@ -99,6 +99,9 @@ TEST(SceneEditLists, WhatIsNotAnInlineMaterialOrALightIsRefusedWithItsReason) {
     EXPECT_NE(refused(R"({"path": ["objects", 1, "material", "albedo"], "value": 0.3})")
                   .find("uses the named material 'grey': edit it as materials.grey.albedo"),
               std::string::npos);
+    EXPECT_NE(refused(R"({"path": ["objects", 1, "material", "albedo", "scale"], "value": 2})")
+                  .find("edit it as materials.grey.albedo.scale"),
+              std::string::npos);
     EXPECT_NE(refused(R"({"path": ["objects", 2, "material", "albedo"], "value": 0.3})")
                   .find("has no material of its own"),
               std::string::npos);
@@ -107,6 +110,12 @@ TEST(SceneEditLists, WhatIsNotAnInlineMaterialOrALightIsRefusedWithItsReason) {
     EXPECT_NE(edit_refusal(dark, R"({"path": ["lights", 0, "intensity"], "value": 5})")
                   .find("the scene has no lights"),
               std::string::npos);
+    // apply_edits alone (without parse_edits' checks) sets no key on a list either.
+    Node root = loaded.root;
+    Node value;
+    value.kind = Node::Kind::Scalar;
+    value.scalar = "1";
+    EXPECT_THROW(apply_edits(root, {SceneEdit{{"lights", "0"}, value}}), EditError);
     // What is allowed is accepted.
     EXPECT_EQ(refused(R"({"path": ["objects", 0, "material", "albedo"], "value": 0.5})"), "");
     EXPECT_EQ(refused(R"({"path": ["lights", 0, "position"], "value": [0, 3, 0]})"), "");

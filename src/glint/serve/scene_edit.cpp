@@ -321,8 +321,10 @@ void check_inline_material(const Node& object, const std::vector<std::string>& p
                         "scene file");
     }
     if (material->is_scalar()) {
+        // The same keys under the named material: objects.1.material.albedo → materials.red.albedo.
+        const std::vector<std::string> keys(path.begin() + 3, path.end());
         throw EditError(where + " uses the named material '" + shown(material->scalar) +
-                        "': edit it as materials." + shown(material->scalar) + "." + path.back());
+                        "': edit it as materials." + shown(material->scalar) + "." + path_text(keys));
     }
     if (!material->is_map()) {
         throw EditError(where + "'s material is " + material->describe() + ", not a map");
@@ -372,6 +374,9 @@ void apply_edits(Node& root, const std::vector<SceneEdit>& edits) {
         }
         if (!node) {
             continue;
+        }
+        if (!node->is_map()) {  // a path that ends at a list (parse_edits refuses one)
+            throw EditError("'" + path_text(edit.path) + "' names a list item, not a parameter");
         }
         const std::string& key = edit.path.back();
         if (!edit.value) {
