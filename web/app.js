@@ -1,7 +1,9 @@
 // glint serve: the page. It shows the frames the server streams (server-sent events) and edits the
 // scene DESCRIPTION: every control is a path into the scene tree (render.samples, camera.eye,
-// materials.glass.ior, …) and a change posts {path, value} to /api/edit. The controls are built from the
-// scene the server sends, so a parameter that a new material or camera reads shows up here by itself.
+// materials.glass.ior, an object's inline material objects.3.material.albedo, a light's
+// lights.0.intensity, list items by position) and a change posts {path, value} to /api/edit. The
+// controls are built from the scene the server sends, so a parameter that a new material, light or
+// camera reads shows up here by itself.
 'use strict';
 
 const $ = (id) => document.getElementById(id);
@@ -127,7 +129,8 @@ async function fetchState() {
 function layoutKey(s) {
   const shape = (v) => (Array.isArray(v) ? `[${v.length}]` : v !== null && typeof v === 'object'
     ? `{${Object.entries(v).map(([k, x]) => k + ':' + shape(x)).join(',')}}` : typeof v);
-  return shape({render: s.scene.render, camera: s.scene.camera, materials: s.scene.materials}) + s.scene.camera?.type;
+  return shape({render: s.scene.render, camera: s.scene.camera, materials: s.scene.materials,
+    inline: (s.scene.objects || []).map((o) => o?.material), lights: s.scene.lights}) + s.scene.camera?.type;
 }
 
 function setState(next) {
@@ -177,9 +180,11 @@ const ranges = {
   fov: [1, 150, 0.5], ior: [1, 3, 0.001], roughness: [0, 1, 0.01], albedo: [0, 1, 0.01],
   lens_radius: [0, 0.5, 0.005], f_stop: [0.7, 32, 0.1], max_depth: [1, 64, 1], exposure: [-5, 5, 0.1],
   metallic: [0, 1, 0.01], transmission: [0, 1, 0.01], fuzz: [0, 1, 0.01],
+  // A spot light's cone (degrees; wider cones through the number box) and an environment map's turn.
+  angle: [0.5, 90, 0.5], falloff_angle: [0, 90, 0.5], rotation: [-180, 180, 1],
 };
 const iorPresets = [['water', 1.333], ['glass', 1.5], ['diamond', 2.417]];
-const colourKeys = /albedo|colou?r|reflectance|tint|specular|diffuse|emission|radiance|background|transmittance/;
+const colourKeys = /albedo|colou?r|reflectance|tint|specular|diffuse|emission|radiance|intensity|irradiance|background|transmittance/;
 const resolutions = [[320, 180], [640, 360], [960, 540], [1280, 720], [1920, 1080]];
 
 function field(label, inputs, title) {
@@ -391,30 +396,72 @@ function buildCamera() {
   box.append(addKeyRow(['camera']));
 }
 
+const isMap = (v) => v !== null && typeof v === 'object' && !Array.isArray(v);
+
+// The fields of a material or a light at `path`: its type, from the server's table `types`, then each
+// key; a map inside it (a texture, an area light's shape, a gradient sky) one level down, its keys
+// indented under its name.
+function typedMapFields(box, path, map, types) {
+  box.append(field('type', [selectInput([...path, 'type'], map.type, types)]));
+  for (const [key, value] of Object.entries(map)) {
+    if (key === 'type') continue;
+    if (isMap(value)) {
+      box.append(field(key, []));
+      for (const [inner, v] of Object.entries(value)) {
+        const row = field(inner, valueControl([...path, key, inner], v), `${key}.${inner}`);
+        row.classList.add('nested');
+        box.append(row);
+      }
+    } else {
+      box.append(field(key, valueControl([...path, key], value)));
+    }
+  }
+  box.append(addKeyRow(path));
+}
+
+const swatch = (path) => el('span', {class: 'swatch', 'data-swatch': JSON.stringify(path)});
+
 function buildMaterials() {
   const box = $('material-fields');
   box.replaceChildren();
   const materials = state.scene.materials || {};
-  if (Object.keys(materials).length === 0) box.append(el('p', {class: 'help', text: 'The scene names no materials.'}));
-  for (const [name, material] of Object.entries(materials)) {
-    const swatch = el('span', {class: 'swatch', 'data-swatch': name});
-    box.append(el('h3', {}, [swatch, name]));
-    if (material === null || typeof material !== 'object') continue;
-    box.append(field('type', [selectInput(['materials', name, 'type'], material.type, state.material_types)]));
-    for (const [key, value] of Object.entries(material)) {
-      if (key !== 'type') box.append(field(key, valueControl(['materials', name, key], value)));
-    }
-    box.append(addKeyRow(['materials', name]));
+  // Objects that hold their material themselves (inline), by their position in objects.
+  const inline = (state.scene.objects || []).map((object, i) => [object, i]).filter(([object]) => isMap(object) && isMap(object.material));
+  if (Object.keys(materials).length === 0 && inline.length === 0) {
+    box.append(el('p', {class: 'help', text: 'The scene gives no materials: every object is grey matte.'}));
   }
-  updateSwatches();
+  for (const [name, material] of Object.entries(materials)) {
+    box.append(el('h3', {}, [swatch(['materials', name]), name]));
+    if (!isMap(material)) continue;
+    typedMapFields(box, ['materials', name], material, state.material_types);
+  }
+  for (const [object, i] of inline) {
+    box.append(el('h3', {title: `the material written inside objects[${i}]`},
+      [swatch(['objects', i, 'material']), `${object.type ?? 'object'} ${i}`, el('span', {class: 'inline-tag', text: 'inline'})]));
+    typedMapFields(box, ['objects', i, 'material'], object.material, state.material_types);
+  }
 }
 
+function buildLights() {
+  const box = $('light-fields');
+  box.replaceChildren();
+  const lights = state.scene.lights || [];
+  if (lights.length === 0) box.append(el('p', {class: 'help', text: 'The scene lists no lights.'}));
+  lights.forEach((light, i) => {
+    box.append(el('h3', {}, [swatch(['lights', i]), `${light?.type ?? 'light'} ${i}`]));
+    if (isMap(light)) typedMapFields(box, ['lights', i], light, state.light_types);
+  });
+}
+
+// A swatch shows the colour a material reflects or a light gives (scaled into range).
 function updateSwatches() {
   for (const swatch of document.querySelectorAll('[data-swatch]')) {
-    const m = state.scene.materials?.[swatch.dataset.swatch] || {};
-    const colour = m.albedo ?? m.color ?? m.reflectance ?? m.emission ?? 0.8;
-    const rgb = Array.isArray(colour) ? colour : [colour, colour, colour];
-    swatch.style.background = rgb.length === 3 && rgb.every((x) => typeof x === 'number') ? linearToHex(rgb.map((x) => Math.min(1, x))) : '#888';
+    const m = valueAt(JSON.parse(swatch.dataset.swatch));
+    const colour = isMap(m) ? (m.albedo ?? m.color ?? m.reflectance ?? m.emission ?? m.radiance ?? m.intensity ?? m.irradiance ?? 0.8) : 0.8;
+    let rgb = Array.isArray(colour) ? colour : [colour, colour, colour];
+    const ok = rgb.length === 3 && rgb.every((x) => typeof x === 'number');
+    if (ok && Math.max(...rgb) > 1) rgb = rgb.map((x) => x / Math.max(...rgb));
+    swatch.style.background = ok ? linearToHex(rgb) : '#888';
   }
 }
 
@@ -422,6 +469,8 @@ function buildControls() {
   buildRender();
   buildCamera();
   buildMaterials();
+  buildLights();
+  updateSwatches();
 }
 
 // Puts the scene's current values into the controls, except the one the user is typing in.

@@ -1,9 +1,12 @@
 // Browser test of `glint serve`: Debian's Chromium, headless, driven by playwright-core.
 // Loads the page, waits for the image to refine, moves controls (a slider, the mouse), checks that the
-// image changed and the accumulation restarted, saves the PNG and takes a screenshot.
+// image changed and the accumulation restarted, saves the PNG and the EXR and takes a screenshot. Then
+// serves a scene of its own (inline materials, a mesh file by a relative path) from its folder, edits
+// an inline material and a light from their panels, exports the scene and renders the export with
+// `glint render` from another folder.
 //   node serve.test.mjs <glint binary> <output folder>
 import assert from 'node:assert/strict';
-import {spawn} from 'node:child_process';
+import {spawn, spawnSync} from 'node:child_process';
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
@@ -14,7 +17,7 @@ assert.ok(glint && outDir, 'usage: node serve.test.mjs <glint binary> <output fo
 fs.mkdirSync(outDir, {recursive: true});
 
 const deadline = setTimeout(() => fail(new Error('the browser test took more than 120 s')), 120_000);
-let server = null;
+const servers = [];
 let context = null;
 const userDataDir = fs.mkdtempSync(path.join(os.tmpdir(), 'glint-chromium-'));
 
@@ -24,7 +27,7 @@ function log(...args) {
 
 async function cleanup() {
   if (context) await context.close().catch(() => {});
-  if (server && server.exitCode === null) server.kill('SIGINT');
+  for (const server of servers) if (server.exitCode === null) server.kill('SIGINT');
   fs.rmSync(userDataDir, {recursive: true, force: true});
 }
 
@@ -34,10 +37,12 @@ async function fail(error) {
   process.exit(1);
 }
 
-// Starts `glint serve` on a free loopback port and returns its address.
-function startServer() {
+// Starts `glint serve` on a free loopback port (with `args` after the port, in the folder `cwd`) and
+// returns its address.
+function startServer(args = [], cwd = undefined) {
   return new Promise((resolve, reject) => {
-    server = spawn(glint, ['serve', '--port', '0'], {stdio: ['ignore', 'pipe', 'inherit']});
+    const server = spawn(glint, ['serve', '--port', '0', ...args], {cwd, stdio: ['ignore', 'pipe', 'inherit']});
+    servers.push(server);
     let output = '';
     server.stdout.on('data', (chunk) => {
       output += chunk;
@@ -53,6 +58,13 @@ const stats = (page) => page.$eval('#stats', (e) => ({
   generation: Number(e.dataset.generation), frame: Number(e.dataset.frame), text: e.textContent,
 }));
 const imageSrc = (page) => page.$eval('#image', (e) => e.src);
+
+// Stops a server with Ctrl-C and checks that it ends cleanly.
+async function stopServer(server) {
+  server.kill('SIGINT');
+  const code = server.exitCode ?? await new Promise((resolve) => server.once('exit', resolve));
+  assert.equal(code, 0, 'glint serve should stop cleanly on Ctrl-C');
+}
 
 // Waits until the latest frame of `generation` has all its samples.
 async function waitRefined(page, generation) {
@@ -199,16 +211,98 @@ try {
   assert.match(yaml, /fov: 28/);
   assert.match(yaml, /red: \{type: matte, albedo: \[0\.95, 0\.15, 0\.1\]\}/);
 
+  // Save EXR: the film's radiance as OpenEXR (its magic number, then version 2).
+  const [exrDownload] = await Promise.all([page.waitForEvent('download'), page.click('#save-exr')]);
+  const exrPath = path.join(outDir, 'saved.exr');
+  await exrDownload.saveAs(exrPath);
+  const exr = fs.readFileSync(exrPath);
+  assert.equal(exr.readUInt32LE(0), 20000630, 'Save EXR should give an OpenEXR file');
+  assert.equal(exr[4], 2);
+  assert.ok(exr.length > 640 * 360 * 3 * 2, 'the EXR should hold every pixel');
+
   const screenshot = path.join(outDir, 'serve.png');
   await page.screenshot({path: screenshot});
-  log('saved', pngPath, yamlPath, screenshot);
+  log('saved', pngPath, exrPath, yamlPath, screenshot);
   assert.deepEqual(pageErrors.filter((e) => !String(e).includes('422')), [], 'the page should log no errors');
+  await page.close();
+  await stopServer(servers[0]);
+
+  // 8. A scene of our own, served from its folder: materials written inside the objects, a mesh read by
+  // a relative path, two lights.
+  const sceneDir = fs.mkdtempSync(path.join(os.tmpdir(), 'glint-serve-scene-'));
+  const elsewhere = fs.mkdtempSync(path.join(os.tmpdir(), 'glint-serve-elsewhere-'));
+  try {
+    fs.writeFileSync(path.join(sceneDir, 'tri.obj'), 'v 0.8 0 0\nv 1.8 0 0\nv 1.3 1 0\nf 1 2 3\n');
+    fs.writeFileSync(path.join(sceneDir, 'scene.yaml'), `render: {width: 160, height: 90, samples: 4}
+camera: {eye: [0, 1, 5], look_at: [0, 0.5, 0], fov: 40}
+objects:
+  - {type: plane, point: [0, 0, 0], normal: [0, 1, 0], material: {type: matte, albedo: 0.6}}
+  - {type: sphere, center: [0, 0.5, 0], radius: 0.5, material: {type: matte, albedo: [0.8, 0.2, 0.1]}}
+  - {type: mesh, file: tri.obj, material: {type: matte, albedo: 0.5}}
+lights:
+  - {type: point, position: [2, 4, 3], intensity: 40}
+  - {type: directional, direction: [-1, -2, -1], irradiance: [0.3, 0.3, 0.4]}
+`);
+    const url2 = await startServer(['scene.yaml'], sceneDir);
+    log('second server at', url2, 'in', sceneDir);
+    const page2 = await context.newPage();
+    page2.on('pageerror', (error) => pageErrors.push(error));
+    await page2.goto(url2);
+    await page2.waitForSelector('#light-fields select');
+    await waitRefined(page2, 1);
+    // The inline materials are listed by their object, the lights by their position.
+    const headings = await page2.$$eval('#material-fields h3', (hs) => hs.map((h) => h.textContent));
+    assert.deepEqual(headings, ['plane 0inline', 'sphere 1inline', 'mesh 2inline']);
+    const lightHeadings = await page2.$$eval('#light-fields h3', (hs) => hs.map((h) => h.textContent));
+    assert.deepEqual(lightHeadings, ['point 0', 'directional 1']);
+
+    // An inline material's colour: the edit reaches the scene and restarts the render.
+    const sphereRed = page2.locator('input[data-path=\'["objects",1,"material","albedo",0]\']');
+    await sphereRed.fill('0.1');
+    await sphereRed.press('Enter');
+    await waitRefined(page2, 2);
+    let served = await page2.evaluate(() => fetch('/api/scene').then((r) => r.json()));
+    assert.deepEqual(served.scene.objects[1].material.albedo, [0.1, 0.2, 0.1]);
+    // A bad value shows the scene builder's message, and the scene stays as it was.
+    await sphereRed.fill('-2');
+    await sphereRed.press('Enter');
+    await page2.waitForSelector('#error:not([hidden])');
+    assert.match(await page2.$eval('#error', (e) => e.textContent), /albedo/);
+    served = await page2.evaluate(() => fetch('/api/scene').then((r) => r.json()));
+    assert.equal(served.generation, 2);
+    // A light's intensity, from the lights panel.
+    const intensity = page2.locator('input[data-path=\'["lights",0,"intensity"]\']');
+    await intensity.fill('80');
+    await intensity.press('Enter');
+    await waitRefined(page2, 3);
+    served = await page2.evaluate(() => fetch('/api/scene').then((r) => r.json()));
+    assert.equal(served.scene.lights[0].intensity, 80);
+
+    // 9. The exported scene renders from another folder: its mesh path was made absolute.
+    const [sceneDownload] = await Promise.all([page2.waitForEvent('download'), page2.click('#export-scene')]);
+    const exportedPath = path.join(elsewhere, 'exported.yaml');
+    await sceneDownload.saveAs(exportedPath);
+    const exported = fs.readFileSync(exportedPath, 'utf8');
+    assert.match(exported, /albedo: \[0\.1, 0\.2, 0\.1\]/);
+    assert.match(exported, /intensity: 80/);
+    assert.ok(exported.includes(`file: ${path.join(fs.realpathSync(sceneDir), 'tri.obj')}`) ||
+      exported.includes(`file: ${path.join(sceneDir, 'tri.obj')}`), exported);
+    const rendered = spawnSync(glint, ['render', 'exported.yaml', '-o', 'exported.png', '--spp', '1'],
+      {cwd: elsewhere, encoding: 'utf8'});
+    assert.equal(rendered.status, 0, `glint render of the exported scene: ${rendered.stderr}`);
+    assert.ok(fs.statSync(path.join(elsewhere, 'exported.png')).size > 0);
+    log('the exported scene rendered from', elsewhere);
+    await page2.screenshot({path: path.join(outDir, 'serve-inline.png')});
+    await page2.close();
+    await stopServer(servers[1]);
+  } finally {
+    fs.rmSync(sceneDir, {recursive: true, force: true});
+    fs.rmSync(elsewhere, {recursive: true, force: true});
+  }
+  assert.deepEqual(pageErrors.filter((e) => !String(e).includes('422')), [], 'the pages should log no errors');
 
   await context.close();
   context = null;
-  server.kill('SIGINT');
-  const code = await new Promise((resolve) => server.once('exit', resolve));
-  assert.equal(code, 0, 'glint serve should stop cleanly on Ctrl-C');
   clearTimeout(deadline);
   fs.rmSync(userDataDir, {recursive: true, force: true});
   log('passed');

@@ -19,6 +19,7 @@
 #include <thread>
 
 #include "glint/image/image_io.hpp"
+#include "glint/light/light.hpp"
 #include "glint/render/render.hpp"
 #include "glint/scene/scene.hpp"
 #include "glint/serve/preview_session.hpp"
@@ -161,6 +162,9 @@ TEST_F(PreviewServerTest, SceneIsSentAsJsonWithTheTablesNames) {
         EXPECT_EQ(state["samplers"][i]["name"], names[i]);
     }
     EXPECT_FALSE(state["integrators"].empty());
+    // The light panel's type menu is the light table.
+    EXPECT_EQ(state["light_types"].get<std::vector<std::string>>(), glint::light_table().names());
+    EXPECT_EQ(state["scene"]["lights"][1]["intensity"], 90);
     EXPECT_EQ(state["width"], 64);
 }
 
@@ -190,6 +194,15 @@ TEST_F(PreviewServerTest, MalformedRequestsGetA4xxWithAMessage) {
         {R"({"path": ["render", "width"], "value": -5})", "application/json", 422, "render"},
         {R"({"path": ["render", "widht"], "value": 5})", "application/json", 422, "did you mean 'width'"},
         {R"({"edits": []})", "application/json", 400, "non-empty"},
+        // Objects and lights by position: an inline material's or a light's parameter only.
+        {R"({"path": ["objects", 1, "radius"], "value": 2})", "application/json", 400, "inline material"},
+        {R"({"path": ["objects", 1, "material", "albedo"], "value": 0.5})", "application/json", 400,
+         "materials.red.albedo"},
+        {R"({"path": ["lights", 3, "intensity"], "value": 5})", "application/json", 400,
+         "there is no light 3"},
+        {R"({"path": ["lights", 1, "intensity"], "value": -5})", "application/json", 422, "intensity"},
+        {R"({"path": ["lights", 1, "positon"], "value": [0, 1, 0]})", "application/json", 422,
+         "did you mean 'position'"},
     };
     for (const Case& c : cases) {
         auto res = post("/api/edit", c.body, c.type);

@@ -229,7 +229,8 @@ TEST(SceneEdit, AnEchoedValueIsCutAtACharacterBoundary) {
     }
 }
 
-// The scene of these tests refers to one file, `wood`, from a texture.
+// The scene of these tests refers to one file, `wood`, from a texture; it has an inline material and a
+// light too.
 SceneDesc scene_with_a_texture() {
     return parse_scene_text(R"(
 materials:
@@ -237,6 +238,9 @@ materials:
   b: {type: matte, albedo: [0.5, 0.5, 0.5]}
 objects:
   - {type: sphere, radius: 1, material: a}
+  - {type: sphere, center: [3, 0, 0], radius: 1, material: {type: matte, albedo: 0.5}}
+lights:
+  - {type: point, position: [0, 5, 0], intensity: 10}
 )",
                             "t.yaml", "/nonexistent-dir");
 }
@@ -270,6 +274,12 @@ TEST(SceneEdit, AnEditCannotMakeTheSceneReferToAnotherFile) {
     EXPECT_EQ(refusal(R"({"path": ["materials", "b", "file"], "value": "x"})"), kFileReferenceRefused);
     EXPECT_EQ(refusal(R"({"path": ["camera", "image"], "value": "x"})"), kFileReferenceRefused);
     EXPECT_EQ(refusal(R"({"path": ["render", "file"], "value": 3})"), kFileReferenceRefused);
+    // Through an inline material or a light as well.
+    EXPECT_EQ(refusal(R"({"edits": [{"path": ["objects", 1, "material", "albedo"], "value": null},
+                                    {"path": ["objects", 1, "material", "albedo", "type"], "value": "image"},
+                                    {"path": ["objects", 1, "material", "albedo", "file"], "value": "x"}]})"),
+              kFileReferenceRefused);
+    EXPECT_EQ(refusal(R"({"path": ["lights", 0, "image"], "value": "sky"})"), kFileReferenceRefused);
     // What the scene already refers to may be used again, and everything else is untouched.
     EXPECT_EQ(refusal(new_texture("wood")), "accepted");
     EXPECT_EQ(refusal(R"({"path": ["materials", "a", "albedo", "file"], "value": "wood"})"), "accepted");
@@ -299,6 +309,8 @@ TEST(SceneEdit, MutatedRequestsOnlyEverThrowTypedErrors) {
         R"({"path": ["materials", "a", "albedo", "file"], "value": "wood"})",
         R"({"path": ["materials", "b", "albedo"], "value": [0.1, 0.2, 0.3]})",
         R"({"path": ["render", "width"], "value": 4096})",
+        R"({"path": ["objects", 1, "material", "albedo"], "value": 0.25})",
+        R"({"edits": [{"path": ["lights", "0", "intensity"], "value": [1, 2, 3]}]})",
     };
     const std::vector<std::string> tokens = {"[",
                                              "]",
@@ -316,6 +328,11 @@ TEST(SceneEdit, MutatedRequestsOnlyEverThrowTypedErrors) {
                                              "\"materials\"",
                                              "\"render\"",
                                              "\"max_depth\"",
+                                             "\"objects\"",
+                                             "\"lights\"",
+                                             "\"material\"",
+                                             "0",
+                                             "1",
                                              "99999999999999999999",
                                              "\"\xc3\""};
     std::mt19937 random(12345);

@@ -26,6 +26,7 @@
 #include "glint/image/image_io.hpp"
 #include "glint/image/tone_map.hpp"
 #include "glint/integrator/integrator.hpp"
+#include "glint/light/light.hpp"
 #include "glint/material/material.hpp"
 #include "glint/sampling/sampler.hpp"
 #include "glint/serve/preview_session.hpp"
@@ -542,6 +543,7 @@ struct PreviewServer::Impl {
                 {"integrators", described(integrator_table())},
                 {"cameras", names_of(camera_table())},
                 {"material_types", names_of(material_table())},
+                {"light_types", names_of(light_table())},
                 {"max_pixels", preview_limits::kMaxPixels},
                 {"limits",
                  {{"width", preview_limits::kMaxSide},

@@ -4,6 +4,8 @@
 //   GET  /, /index.html, /app.js, /style.css   the page (embedded; any other path is 404)
 //   GET  /api/scene                            the scene tree as JSON, the tables' names, limits
 //   POST /api/edit      {"edits": [{"path": [...], "value": ...}]}   → the new scene state, or 4xx
+//                       (paths as scene_edit.hpp says: ["materials", "glass", "ior"],
+//                       ["objects", 3, "material", "albedo"], ["lights", 0, "intensity"])
 //   POST /api/focus     {"x": px, "y": px}      → {"hit", "distance", "depth"}
 //   GET  /api/events                           text/event-stream of "frame" events (PNG as base64)
 //   GET  /api/image.png                        the current image, as an attachment

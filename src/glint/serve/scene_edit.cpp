@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 
 #include "glint/scene/scene_writer.hpp"
 #include "glint/serve/serve_limits.hpp"
@@ -18,7 +19,22 @@ using preview_limits::kMaxListLength;
 using preview_limits::kMaxPathLength;
 using preview_limits::kMaxWordLength;
 
-const std::array<const char*, 4> kEditableSections = {"render", "camera", "background", "materials"};
+const std::array<const char*, 6> kEditableSections = {"render",    "camera",  "background",
+                                                      "materials", "objects", "lights"};
+
+// The position `key` names in a list of `size` items: its digits, below `size`; nullopt otherwise.
+std::optional<size_t> list_index(const std::string& key, size_t size) {
+    size_t index = 0;
+    const auto [ptr, ec] = std::from_chars(key.data(), key.data() + key.size(), index);
+    if (key.empty() || ec != std::errc() || ptr != key.data() + key.size() || index >= size) {
+        return std::nullopt;
+    }
+    return index;
+}
+
+bool is_index(const std::string& key) {
+    return list_index(key, std::numeric_limits<size_t>::max()).has_value();
+}
 
 // A scalar that is a whole number ("640", "-3") or a decimal number ("1.5", "1e-3"), as YAML writes it.
 std::optional<nlohmann::ordered_json> scalar_number(const std::string& text) {
@@ -206,8 +222,15 @@ std::vector<SceneEdit> parse_edits(const nlohmann::json& request) {
         }
         SceneEdit edit;
         for (const auto& key : path) {
+            // A list's item is named by its position: a number, or its digits as a word.
+            if (key.is_number_unsigned()) {
+                edit.path.push_back(std::to_string(key.get<std::uint64_t>()));
+                continue;
+            }
             if (!key.is_string() || !is_word(key.get<std::string>())) {
-                throw EditError(where + ": each key of 'path' must be a word (letters, digits, '_', '-')");
+                throw EditError(where +
+                                ": each key of 'path' must be a word (letters, digits, '_', '-') or the "
+                                "position of a list item (0, 1, …)");
             }
             edit.path.push_back(key.get<std::string>());
         }
@@ -218,10 +241,26 @@ std::vector<SceneEdit> parse_edits(const nlohmann::json& request) {
         if (!editable) {
             throw EditError(
                 where + ": '" + path_text(edit.path) +
-                "' cannot be edited from the page (editable: render, camera, background, materials)");
+                "' cannot be edited from the page (editable: render, camera, background, materials, "
+                "an object's inline material, lights)");
         }
         if (edit.path[0] == "materials" && edit.path.size() < 3) {
             throw EditError(where + ": edit a material's parameter, e.g. materials.<name>.albedo");
+        }
+        // Of an object only its own material: its shape, place and transform stay as loaded (they are
+        // the meshes and BVHs an edit never rebuilds), and no object is added or removed.
+        if (edit.path[0] == "objects" &&
+            (edit.path.size() < 4 || !is_index(edit.path[1]) || edit.path[2] != "material")) {
+            throw EditError(where + ": '" + path_text(edit.path) +
+                            "' cannot be edited from the page: of an object only the parameters of its "
+                            "inline material can, objects.<index>.material.<parameter>, e.g. "
+                            "objects.0.material.albedo");
+        }
+        // A light's parameters, but no light added or removed.
+        if (edit.path[0] == "lights" && (edit.path.size() < 3 || !is_index(edit.path[1]))) {
+            throw EditError(where + ": '" + path_text(edit.path) +
+                            "' cannot be edited from the page: edit a light's parameter, "
+                            "lights.<index>.<parameter>, e.g. lights.0.intensity");
         }
         if (!item["value"].is_null()) {
             edit.value = value_node(item["value"], where + " (" + path_text(edit.path) + ")");
@@ -231,6 +270,69 @@ std::vector<SceneEdit> parse_edits(const nlohmann::json& request) {
     return result;
 }
 
+namespace {
+
+// The sections that are lists, whose items an edit names by position (objects.3, lights.0).
+bool is_list_section(const std::string& section) {
+    return section == "objects" || section == "lights";
+}
+
+std::string singular(const std::string& section) {
+    return section == "objects" ? "object" : "light";
+}
+
+// The list `path[0]` (objects or lights) of `root`; a scene without it has none to edit.
+Node& list_section(Node& root, const std::vector<std::string>& path) {
+    Node* section = const_cast<Node*>(root.find(path[0]));
+    if (!section || !section->is_sequence() || section->items.empty()) {
+        throw EditError("'" + path_text(path) + "': the scene has no " + path[0]);
+    }
+    return *section;
+}
+
+// The item `path[1]` of the list `section` (objects or lights), which must exist: an edit never adds one.
+Node& list_item(Node& section, const std::vector<std::string>& path) {
+    const std::string what = singular(path[0]);
+    const size_t count = section.items.size();
+    const auto index = list_index(path[1], count);
+    if (!index) {
+        throw EditError("'" + path_text(path) + "': there is no " + what + " " + shown(path[1]) +
+                        " in the scene; it has " + std::to_string(count) + " " +
+                        (count == 1 ? what : path[0]) + ", numbered from 0");
+    }
+    Node& item = section.items[*index];
+    if (!item.is_map()) {
+        throw EditError("'" + path_text(path) + "': " + what + " " + path[1] + " is " + item.describe() +
+                        ", not a map");
+    }
+    return item;
+}
+
+// An object's material may be edited from the page only where the object holds it (inline): a named one
+// is edited under materials, and an object without one is the default grey matte, which has no keys.
+void check_inline_material(const Node& object, const std::vector<std::string>& path) {
+    const Node* material = object.find("material");
+    // Appended piece by piece: GCC 12 warns wrongly (-Wrestrict) about "'" + a temporary here.
+    std::string where = "'";
+    where.append(path_text(path)).append("': object ").append(path[1]);
+    if (!material) {
+        throw EditError(where +
+                        " has no material of its own (it is the default grey matte); give it one in the "
+                        "scene file");
+    }
+    if (material->is_scalar()) {
+        // The same keys under the named material: objects.1.material.albedo → materials.red.albedo.
+        const std::vector<std::string> keys(path.begin() + 3, path.end());
+        throw EditError(where + " uses the named material '" + shown(material->scalar) +
+                        "': edit it as materials." + shown(material->scalar) + "." + path_text(keys));
+    }
+    if (!material->is_map()) {
+        throw EditError(where + "'s material is " + material->describe() + ", not a map");
+    }
+}
+
+}  // namespace
+
 void apply_edits(Node& root, const std::vector<SceneEdit>& edits) {
     if (!root.is_map()) {
         throw EditError("the scene is not a map");
@@ -238,6 +340,13 @@ void apply_edits(Node& root, const std::vector<SceneEdit>& edits) {
     for (const SceneEdit& edit : edits) {
         Node* node = &root;
         for (size_t i = 0; i + 1 < edit.path.size(); ++i) {
+            if (i < 2 && is_list_section(edit.path[0])) {
+                node = i == 0 ? &list_section(*node, edit.path) : &list_item(*node, edit.path);
+                if (i == 1 && edit.path[0] == "objects") {
+                    check_inline_material(*node, edit.path);
+                }
+                continue;
+            }
             Node* child = const_cast<Node*>(node->find(edit.path[i]));
             if (!child) {
                 if (!edit.value) {
@@ -265,6 +374,9 @@ void apply_edits(Node& root, const std::vector<SceneEdit>& edits) {
         }
         if (!node) {
             continue;
+        }
+        if (!node->is_map()) {  // a path that ends at a list (parse_edits refuses one)
+            throw EditError("'" + path_text(edit.path) + "' names a list item, not a parameter");
         }
         const std::string& key = edit.path.back();
         if (!edit.value) {

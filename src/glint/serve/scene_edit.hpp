@@ -6,9 +6,14 @@
 // integrator is therefore editable without a change here.
 //
 // What an edit may do is limited:
-//  - only the sections render, camera, background and materials are editable; values are numbers,
-//    booleans, lists of numbers, or single words (names from the tables: "jittered", "path"); never a
-//    whole new object;
+//  - only the sections render, camera, background and materials are editable, and of the lists
+//    objects and lights, the parameters of an object's inline material (objects.<i>.material.<key>) and
+//    of a light (lights.<i>.<key>), their items named by position from 0 (a JSON number or its digits);
+//    an edit never adds or removes an object or a light, so these positions are stable for the whole
+//    session. Values are numbers, booleans, lists of numbers, or single words (names from the tables:
+//    "jittered", "path"); never a whole new object. What a value may be is the scene builder's to say:
+//    the edited tree is built by the same constructors as a scene file, so a material or light edit
+//    meets the same checks, with the same messages (422 at the value's line of the edited YAML);
 //  - the edited scene may not refer to any file the loaded scene does not already refer to (checked on
 //    the whole edited tree, so no sequence of edits gets round it), so the page can never make glint
 //    open, or tell whether there is, any other file;
@@ -62,8 +67,10 @@ inline constexpr const char* kFileReferenceRefused =
     "file to the scene file, then load it again)";
 
 struct SceneEdit {
-    std::vector<std::string> path;  // keys from the top of the scene, e.g. {"materials", "glass", "ior"}
-    std::optional<Node> value;      // nullopt: remove the key
+    // Keys from the top of the scene, e.g. {"materials", "glass", "ior"}; a list item by its position in
+    // digits, e.g. {"lights", "0", "intensity"}.
+    std::vector<std::string> path;
+    std::optional<Node> value;  // nullopt: remove the key
 };
 
 // The tree as JSON: maps → objects (in file order), lists → arrays, scalars → numbers when they are
@@ -74,10 +81,14 @@ nlohmann::ordered_json node_to_json(const Node& node);
 // most kMaxJsonDepth deep, well formed (else EditError). Allocates in proportion to the body only.
 nlohmann::json parse_request_json(std::string_view body);
 
-// Reads {"edits": [{"path": [...], "value": ...}, ...]} (or one {"path", "value"}). Throws EditError.
+// Reads {"edits": [{"path": [...], "value": ...}, ...]} (or one {"path", "value"}); a path key is a word
+// or a list position (a non-negative JSON integer). Throws EditError for a path outside what the page
+// may edit (see the top of this file).
 std::vector<SceneEdit> parse_edits(const nlohmann::json& request);
 
-// Applies the edits in order to `root` (a map), creating maps along a path as needed. Throws EditError.
+// Applies the edits in order to `root` (a map), creating maps along a path as needed (but no material,
+// object or light: an edit names one that exists, and of an object only an inline material). Throws
+// EditError.
 // Checks nothing about files or limits: apply_edit_request() does.
 void apply_edits(Node& root, const std::vector<SceneEdit>& edits);
 

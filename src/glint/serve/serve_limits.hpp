@@ -29,8 +29,9 @@ inline constexpr std::int64_t kMaxSamples = 16384;
 inline constexpr std::int64_t kMaxDepth = 64;
 
 // The numeric keys that set the cost of a frame. (Other keys the page may edit have ranges the scene
-// builder checks and costs that do not grow with their value: noise octaves are at most 16, the tree
-// is at most kMaxPathLength deep; objects and lights, whose number sets the cost too, are not editable.)
+// builder checks and costs that do not grow with their value, or grow within the builder's bound:
+// noise octaves are at most 16, a light's shadow rays at most 4096, the tree is at most kMaxPathLength
+// deep; objects and lights, whose number sets the cost too, are edited in place, never added.)
 struct NumericLimit {
     std::string_view section, key;
     std::int64_t maximum;
