@@ -18,7 +18,7 @@ std::shared_ptr<const SourceFile> SourceFile::excerpt(std::string path, int firs
     return file;
 }
 
-std::optional<std::string_view> SourceFile::line(int number) const {
+std::optional<std::string_view> SourceFile::line(int number, std::size_t skip, std::size_t max_length) const {
     if (number < first_line) {
         return std::nullopt;
     }
@@ -33,12 +33,14 @@ std::optional<std::string_view> SourceFile::line(int number) const {
     if (start >= text.size() && !(start == 0 && number == first_line && !text.empty())) {
         return std::nullopt;  // past the last line (a final newline ends a line, it does not begin one)
     }
-    std::size_t end = text.find('\n', start);
-    end = end == std::string::npos ? text.size() : end;
-    if (end > start && text[end - 1] == '\r') {
+    const std::string_view from_start = std::string_view(text).substr(start);
+    const std::string_view rest = from_start.substr(std::min(skip, from_start.size()), max_length);
+    std::size_t end = rest.find('\n');
+    end = end == std::string_view::npos ? rest.size() : end;
+    if (end > 0 && rest[end - 1] == '\r') {
         --end;
     }
-    return std::string_view(text).substr(start, end - start);
+    return rest.substr(0, end);
 }
 
 std::string format_diagnostic(const SourcePos& pos, const std::string& message, const std::string& severity) {
@@ -51,19 +53,31 @@ std::string format_diagnostic(const SourcePos& pos, const std::string& message, 
         out << ' ';
     }
     out << severity << ": " << message;
-    const std::optional<std::string_view> line =
-        pos.file && pos.line > 0 ? pos.file->line(pos.line) : std::optional<std::string_view>();
-    if (line) {
+    // A very long line (generated JSON, a minified file, a mesh on one line) is cut to a window around
+    // the column, and nothing else of it is read: thousands of messages about one minified line would
+    // otherwise each scan it.
+    constexpr std::size_t kWindow = 100;
+    const std::size_t column0 = static_cast<std::size_t>(std::max(pos.column, 1)) - 1;
+    std::optional<std::string_view> part;  // far along a long line: the window, from its start
+    if (pos.file && pos.line > 0 && column0 > 2 * kWindow) {
+        part = pos.file->line(pos.line, column0 - kWindow / 2, kWindow);
+        if (part && part->size() < kWindow / 2) {
+            part.reset();  // the line ends before the column: read it from its start, as below
+        }
+    }
+    std::string text;        // the line, or the window of it, to quote
+    std::size_t column = 0;  // the caret's column in `text`, from 1; 0: nothing to quote
+    if (part) {
+        text = "..." + std::string(*part) + "...";
+        column = kWindow / 2 + 4;
+    } else if (const std::optional<std::string_view> line =
+                   pos.file && pos.line > 0 ? pos.file->line(pos.line, 0, column0 + 2 * kWindow + 2)
+                                            : std::optional<std::string_view>()) {
         const std::string_view whole = *line;
         // The column comes from the parser and may lie past the end of the line (a parser that
         // counted characters of another encoding): keep it within the line.
-        const std::size_t column_in_line =
-            std::clamp<std::size_t>(static_cast<std::size_t>(std::max(pos.column, 1)), 1, whole.size() + 1);
-        // A very long line (generated JSON, a minified file, a mesh on one line) is cut to a window
-        // around the column before anything is copied.
-        constexpr std::size_t kWindow = 100;
-        std::string text;
-        std::size_t column = column_in_line;
+        const std::size_t column_in_line = std::min(column0 + 1, whole.size() + 1);
+        column = column_in_line;
         if (whole.size() > 2 * kWindow) {
             const std::size_t start = column_in_line - 1 > kWindow / 2 ? column_in_line - 1 - kWindow / 2 : 0;
             text = (start > 0 ? "..." : "") + std::string(whole.substr(start, kWindow)) + "...";
@@ -71,6 +85,8 @@ std::string format_diagnostic(const SourcePos& pos, const std::string& message, 
         } else {
             text = std::string(whole);
         }
+    }
+    if (column > 0) {
         // Control characters (a zero byte, an escape sequence) would garble the terminal: shown as '?'.
         for (char& c : text) {
             if ((static_cast<unsigned char>(c) < 0x20 && c != '\t') || c == 0x7f) {

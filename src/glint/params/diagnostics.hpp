@@ -22,8 +22,11 @@ struct SourceFile {
     // Only some lines of a file (say, the one line of a large mesh file an error is about).
     static std::shared_ptr<const SourceFile> excerpt(std::string path, int first_line,
                                                      std::string_view lines);
-    // Line `number` (1-based, without its end of line), or nullopt if the text does not hold it.
-    std::optional<std::string_view> line(int number) const;
+    // Line `number` (1-based, without its end of line), or nullopt if the text does not hold it; of it,
+    // at most `max_length` bytes from its byte `skip` on, found without reading the rest of the line
+    // (the bytes skipped are taken to hold no line end: the caller knows the line is that long).
+    std::optional<std::string_view> line(int number, std::size_t skip = 0,
+                                         std::size_t max_length = std::string::npos) const;
 };
 
 // A 1-based line and column in a SourceFile. A default SourcePos means "no position known".
