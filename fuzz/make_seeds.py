@@ -631,6 +631,15 @@ EDIT_SEEDS = {
     "refused-path-value.json": {"path": ["materials", "floor", "albedo"], "value": "../../etc/passwd"},
     "refused-object-value.json": {"path": ["camera", "eye"], "value": {"x": 1}},
     "unknown-material.json": {"path": ["materials", "nothing", "albedo"], "value": 0.5},
+    "inline-material.json": {"edits": [{"path": ["objects", 8, "material", "albedo", "even"], "value": 0.3},
+                                        {"path": ["objects", "8", "material", "type"], "value": "matte"}]},
+    "lights.json": {"edits": [{"path": ["lights", 1, "intensity"], "value": 45},
+                              {"path": ["lights", 2, "angle"], "value": 60},
+                              {"path": ["lights", 0, "radiance"], "value": [0.1, 0.2, 0.3]}]},
+    "refused-positions.json": {"edits": [{"path": ["lights", 3, "intensity"], "value": 1},
+                                         {"path": ["objects", -1, "material", "albedo"], "value": 1},
+                                         {"path": ["objects", 0, "material", "albedo"], "value": 1},
+                                         {"path": ["lights", "1e3", "position"], "value": [0, 0, 0]}]},
     "big-numbers.json": {"edits": [{"path": ["camera", "fov"], "value": 1e308},
                                    {"path": ["render", "width"], "value": 9223372036854775807},
                                    {"path": ["background"], "value": [-0.0, 5e-324, 18446744073709551615]}]},
@@ -808,6 +817,7 @@ def dictionaries():
     write_dict("scene_json.dict", "Scene keys and names as JSON strings (made by fuzz/make_seeds.py), JSON syntax.",
                json_syntax)
     edit_words = ['"edits"', '"path"', '"value"', '"render"', '"camera"', '"background"', '"materials"', "null",
+                  '"objects"', '"lights"', '"material"', "0", "8", "-1", '"2"',
                   "true", "false", "[]", "{}", "1e400", "-1e-400", "9223372036854775808", '"a-b_c"'] + [
         '"%s"' % w for w in doc_words + SCENE_WORDS[:22]] + ['"floor"', '"shiny"', '"coat"', '"steel"', '"rtiow"',
                                                              '"glass"', '"lamp"', '"chrome"']

@@ -2,7 +2,8 @@
 // it (apply_edit_request in scene_edit.hpp: the JSON and its bounds, the edits, the rule that an edit
 // names no new file, the preview's limits, the YAML written and parsed back), then built as the session
 // builds it and rendered tiny. The loaded scene is fixed (below): one of every material, so that
-// edits of their parameters reach every material's checks.
+// edits of their parameters reach every material's checks, an inline material and three lights, which
+// edits reach by position (objects.<i>.material.<key>, lights.<i>.<key>).
 //
 // Findings: a crash, a leak, a hang, unbounded memory, an exception other than EditError and SceneError
 // (the two the server turns into 400 and 422), or a written tree that does not read back as the same
@@ -41,9 +42,11 @@ objects:
   - {type: cylinder, base: [-1, 0, 2], top: [-1, 1, 2], radius: 0.3, material: rtiow}
   - {type: torus, center: [1, 0.3, 2], minor_radius: 0.1, major_radius: 0.3, material: chrome}
   - {type: rectangle, corner: [-1, 3, -1], edge1: [2, 0, 0], edge2: [0, 0, 2], material: lamp}
+  - {type: sphere, center: [1.5, 2, -1], radius: 0.4, material: {type: matte, albedo: {type: checker, even: 0.7, odd: 0.1}}}
 lights:
   - {type: ambient, radiance: 0.12}
   - {type: point, position: [4, 6, 5], intensity: 90}
+  - {type: spot, position: [0, 5, 0], look_at: [0, 0, 0], intensity: 40, angle: 30}
 )";
 
 const glint::SceneDesc& loaded_scene() {
