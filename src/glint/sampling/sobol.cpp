@@ -16,9 +16,7 @@ std::uint32_t scrambled_index(const SampleHashes& key, std::uint64_t seeds) {
 
 Point2 SobolSampler::sample_2d(const SampleHashes& key, std::uint32_t dimension) const {
     if (dimension >= kStratifiedDimensions) {
-        const std::uint64_t bits = key.sample_bits(dimension);
-        return {bits_to_unit(static_cast<std::uint32_t>(bits)),
-                bits_to_unit(static_cast<std::uint32_t>(bits >> 32))};
+        return unit_pair(key.sample_bits(dimension));  // the random pattern's point
     }
     const std::uint64_t seeds = key.pixel_bits(dimension);
     const std::uint32_t index = scrambled_index(key, seeds);
