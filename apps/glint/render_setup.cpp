@@ -57,17 +57,7 @@ PreparedRender prepare_render(const RenderOptions& options, bool print_warnings)
 }
 
 Image film_window(const Film& film, const PixelWindow& window) {
-    Image image(window.width(), window.height());
-    for (int y = 0; y < window.height(); ++y) {
-        for (int x = 0; x < window.width(); ++x) {
-            const Rgb c = film.pixel(window.x0 + x, window.y0 + y);
-            float* out = image.pixel(x, y);
-            out[0] = static_cast<float>(c.r);
-            out[1] = static_cast<float>(c.g);
-            out[2] = static_cast<float>(c.b);
-        }
-    }
-    return image;
+    return film.to_image(window.x0, window.y0, window.width(), window.height());
 }
 
 void print_nonfinite_warning(const RenderStats& stats) {

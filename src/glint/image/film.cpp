@@ -27,10 +27,14 @@ void Film::clear() {
 }
 
 Image Film::to_image() const {
-    Image image(width_, height_);
-    for (int y = 0; y < height_; ++y) {
-        for (int x = 0; x < width_; ++x) {
-            const Rgb c = pixel(x, y);
+    return to_image(0, 0, width_, height_);
+}
+
+Image Film::to_image(int x0, int y0, int width, int height) const {
+    Image image(width, height);
+    for (int y = 0; y < height; ++y) {
+        for (int x = 0; x < width; ++x) {
+            const Rgb c = pixel(x0 + x, y0 + y);
             float* out = image.pixel(x, y);
             out[0] = static_cast<float>(c.r);
             out[1] = static_cast<float>(c.g);

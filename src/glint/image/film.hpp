@@ -31,6 +31,8 @@ class Film {
     }
     void clear();
     Image to_image() const;
+    // The pixels x0 ≤ x < x0 + width, y0 ≤ y < y0 + height alone (a crop, a band), as to_image gives them.
+    Image to_image(int x0, int y0, int width, int height) const;
 
     // What a pixel holds: the sum of its samples and how many. Read and restored whole by checkpoints
     // (render/checkpoint.hpp), so that a resumed render adds to exactly the sums it left.
