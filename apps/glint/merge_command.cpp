@@ -105,7 +105,7 @@ int run_merge(const MergeOptions& options) {
         // The window follows from the part's number; the pixels must fill it.
         const glint::PixelWindow expected =
             glint::cli::band_of(info.tile.index, info.tile.count, info.width, info.height);
-        if (info.tile.count > info.height || window_text(info.window) != window_text(expected) ||
+        if (info.tile.count > info.height || info.window != expected ||
             part.image.width != expected.width() || part.image.height != expected.height()) {
             return refuse(file + ": part " + std::to_string(info.tile.index) + "/" +
                           std::to_string(info.tile.count) + " of a " + std::to_string(info.width) + "x" +

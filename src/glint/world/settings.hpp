@@ -34,6 +34,7 @@ struct PixelWindow {
     int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
     int width() const { return x1 - x0; }
     int height() const { return y1 - y0; }
+    bool operator==(const PixelWindow&) const = default;
 };
 
 struct RenderSettings {
