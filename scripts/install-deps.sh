@@ -8,7 +8,7 @@ packages=(
   python3  # the layer check (scripts/check_layers.py, run by make test)
   python3-numpy  # make bench-peers (bench/peers.py), the Python module's tests
   pybind11-dev python3-dev python3-pytest  # the Python module glint (python/) and its tests (tests/python)
-  libtbb-dev libyaml-cpp-dev libcli11-dev libfmt-dev
+  libtbb-dev libyaml-dev libcli11-dev libfmt-dev
   libstb-dev libjpeg62-turbo-dev libtinyexr-dev libpng-dev libtinyobjloader-dev libtinygltf-dev libembree-dev
   nlohmann-json3-dev libcpp-httplib-dev
   libopenmpi-dev openmpi-bin  # mpirun glint render (optional at build time; docs/distributed.md)

@@ -31,7 +31,7 @@ bool says(const SceneError& e, const std::string& part) {
 }
 
 TEST(SceneLimits, AnAliasInsideItsOwnAnchorIsAnError) {
-    // yaml-cpp makes an alias the node it names, so these are values that contain themselves.
+    // An alias stands for the value it names, so these are values that contain themselves.
     for (const std::string text :
          {"&a [*a]", "objects: &a [*a]\n", "a: &a {b: *a}\n", "a: &a {b: [1, {c: *a}]}\n"}) {
         const SceneError e = error_of(text);

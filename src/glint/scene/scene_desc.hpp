@@ -19,19 +19,19 @@ struct SceneDesc {
 };
 
 // Limits on a scene's text, checked before it is trusted (docs/scene-format.md, "Limits"):
-// the size of a file; how deep lists and maps nest, counting nesting reached through aliases (yaml-cpp's
-// own parser refuses about 500 levels of the text); how many values the scene expands to, counting an
-// alias each time it is used (a hand-written scene has thousands; the cap keeps an alias bomb to about
-// 0.2 GB and a fraction of a second); and how many bytes its scalars add up to, counted the same way
-// (a long string repeated by a million aliases).
+// the size of a file; how deep lists and maps nest, counting nesting reached through aliases; how many
+// values the scene expands to, counting an alias each time it is used (a hand-written scene has
+// thousands; the cap keeps an alias bomb to about 0.2 GB and a fraction of a second); and how many bytes
+// its scalars add up to, counted the same way (a long string repeated by a million aliases).
 inline constexpr std::size_t kMaxSceneFileBytes = std::size_t{64} << 20;
 inline constexpr std::size_t kMaxSceneNesting = 100;
 inline constexpr std::size_t kMaxSceneValues = 1'000'000;
 inline constexpr std::size_t kMaxSceneValueBytes = std::size_t{256} << 20;
 
 // Parses YAML (and so JSON) text. `display_path` names the file in error messages.
-// Throws SceneError on a syntax error, a duplicate key, a top level that is not a map, a zero byte or a
-// UTF-16/32 byte-order mark (yaml-cpp would read those encodings), or text beyond the limits above.
+// Throws SceneError on a syntax error, a duplicate key, a top level that is not a map, a zero byte, a
+// UTF-16/32 byte-order mark (libyaml would read UTF-16), bytes that are not UTF-8, or text beyond the
+// limits above. Only the first YAML document of the text is read.
 SceneDesc parse_scene_text(const std::string& text, const std::string& display_path,
                            const std::filesystem::path& base_dir);
 
