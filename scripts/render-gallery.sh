@@ -36,6 +36,9 @@ render "$orientation" "$out/gltf-orientation-test-back.png" --width 480 --height
 # McGuire's OBJ + MTL Cornell box (examples/assets/CREDITS.md), from its open front.
 render examples/assets/cornell-box-obj/CornellBox-Original.obj "$out/obj-cornell-box.png" --width 320 \
   --height 320 --spp 256 --set 'camera.eye=[0,1,3.9]'
+# The pbrt-v4 Cornell box (not a .yaml, so not rendered above), as docs/gallery.md shows it beside
+# pbrt-v4's own render of the file.
+render examples/pbrt-cornell.pbrt "$out/pbrt-cornell-glint.png" --spp 256 --seed 1
 if [ ${#failed[@]} -gt 0 ]; then
   printf 'render-gallery: failed: %s\n' "${failed[@]}" >&2
   exit 1
