@@ -11,6 +11,7 @@ packages=(
   libtbb-dev libyaml-dev libcli11-dev libfmt-dev
   libstb-dev libjpeg62-turbo-dev libtinyexr-dev libpng-dev libtinyobjloader-dev libtinygltf-dev libembree-dev
   nlohmann-json3-dev libcpp-httplib-dev
+  zlib1g-dev  # deflate and CRC-32 for glint's PNG writer
   libopenmpi-dev openmpi-bin  # mpirun glint render (optional at build time; docs/distributed.md)
   libgtest-dev libgmock-dev libbenchmark-dev
   clang libclang-rt-14-dev llvm  # make fuzz: clang with libFuzzer and the sanitizers' runtimes, llvm-symbolizer

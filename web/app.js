@@ -143,7 +143,14 @@ function setState(next) {
   else updateControls();
   if (state.render_error) showError(state.render_error);
   $('refine-continuously').checked = state.continuous;
-  $('refine-note').hidden = state.extendable || !state.continuous;
+  showRefineNote(state);
+}
+
+// The one rule for the note under "keep refining": shown only while refining is asked for and the
+// scene's sample pattern cannot go past its target. Both the scene's state and /api/refine's answer
+// carry {continuous, extendable}, so each goes through here rather than a rule of its own.
+function showRefineNote({continuous, extendable}) {
+  $('refine-note').hidden = extendable || !continuous;
 }
 
 // ---- frames ---------------------------------------------------------------------------------------
@@ -613,7 +620,7 @@ function setupDisplay() {
       const response = await postJson('/api/refine', {continuous: refine.checked});
       const body = await response.json();
       if (!response.ok) showError(body.error || `error ${response.status}`);
-      else $('refine-note').hidden = body.extendable;
+      else showRefineNote(body);
     } catch (error) {
       showError(`cannot reach glint serve: ${error}`);
     }

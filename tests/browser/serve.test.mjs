@@ -220,6 +220,23 @@ try {
   assert.equal(exr[4], 2);
   assert.ok(exr.length > 640 * 360 * 3 * 2, 'the EXR should hold every pixel');
 
+  // The "keep refining" note: with a sample pattern that stops at its target (the default scene's
+  // jittered), ticking the box shows it and unticking hides it again (the page once showed it after
+  // unticking).
+  const note = async () => page.$eval('#refine-note', (e) => !e.hidden);
+  const patterned = await page.evaluate(() => fetch('/api/scene').then((r) => r.json()));
+  assert.equal(patterned.settings.sampler, 'jittered');
+  assert.equal(patterned.extendable, false);
+  assert.equal(await note(), false, 'not refining: no note');
+  const refine = page.locator('#refine-continuously');
+  await Promise.all([page.waitForResponse((r) => r.url().endsWith('/api/refine')), refine.check()]);
+  await page.waitForSelector('#refine-note', {state: 'visible', timeout: 5_000});
+  await Promise.all([page.waitForResponse((r) => r.url().endsWith('/api/refine')), refine.uncheck()]);
+  await page.waitForSelector('#refine-note', {state: 'hidden', timeout: 5_000});
+  // The page's state (another answer of /api/scene) keeps it hidden too.
+  await page.evaluate(() => fetchState());
+  assert.equal(await note(), false, 'unticked: no note, whatever the sample pattern');
+
   const screenshot = path.join(outDir, 'serve.png');
   await page.screenshot({path: screenshot});
   log('saved', pngPath, exrPath, yamlPath, screenshot);

@@ -7,7 +7,11 @@
 //                       (paths as scene_edit.hpp says: ["materials", "glass", "ior"],
 //                       ["objects", 3, "material", "albedo"], ["lights", 0, "intensity"])
 //   POST /api/focus     {"x": px, "y": px}      → {"hit", "distance", "depth"}
-//   GET  /api/events                           text/event-stream of "frame" events (PNG as base64)
+//   GET  /api/events                           text/event-stream of "frame" events (the frame's data and
+//                                              the address of its picture)
+//   GET  /api/frames/ID.png                    the latest frame's picture, as binary PNG (whole: a
+//                                              delta against the previous frame was measured and does
+//                                              not pay with this PNG encoder; see preview_session.cpp)
 //   GET  /api/image.png                        the current image, as an attachment
 //   GET  /api/scene.yaml                       the scene on screen as YAML, as an attachment
 //
