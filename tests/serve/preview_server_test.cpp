@@ -310,7 +310,7 @@ TEST_F(PreviewServerTest, FramesRefineAndAnEditRestartsTheAccumulation) {
     const Scene scene = build_scene(exported);
     Film film(scene.view.settings.width, scene.view.settings.height);
     render(scene, film);
-    const std::vector<unsigned char> expected = encode_png(film.to_image());
+    const std::vector<unsigned char> expected = encode_png(film.to_image(), kPngFrameEncoding);
     EXPECT_TRUE(image->body == std::string(expected.begin(), expected.end()));
 }
 
@@ -511,7 +511,7 @@ TEST_F(PreviewServerTest, SaveExrGivesTheFilmsRadianceAsItIsAndTheDisplayControl
     EXPECT_EQ(after->generation, generation);
     EXPECT_EQ(server_->session().state().generation, generation);
     EXPECT_NE(after->png, before->png);
-    EXPECT_EQ(after->png, encode_png(to_display(film.to_image(), {2, ToneCurve::Agx})));
+    EXPECT_EQ(after->png, encode_png(to_display(film.to_image(), {2, ToneCurve::Agx}), kPngFrameEncoding));
     EXPECT_EQ(server_->session().state().yaml.find("agx"), std::string::npos);  // not in the scene
     // {} goes back to the scene's own display: the first PNG again.
     ASSERT_EQ(post("/api/display", "{}")->status, 200);

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "glint/image/image.hpp"
+#include "glint/image/png.hpp"
 #include "glint/image/tone_map.hpp"
 
 namespace glint {
@@ -66,7 +67,7 @@ using ExrAttributes = std::map<std::string, std::string>;
 // header (a name of 1 to 255 bytes, a value not empty), and each of `layers` as channels named
 // "layer.channel" beside R, G and B (OpenEXR's multi-layer convention: albedo.R, depth.Z; the AOVs);
 // without either the bytes are as before.
-std::vector<unsigned char> encode_png(const Image& image);
+std::vector<unsigned char> encode_png(const Image& image, const PngEncoding& encoding = kPngFileEncoding);
 std::vector<unsigned char> encode_pfm(const Image& image);
 // A layer of 3 channels as a colour PFM ("PF"), of 1 as a grey one ("Pf").
 std::vector<unsigned char> encode_pfm(const ImageLayer& layer);

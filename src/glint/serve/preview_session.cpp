@@ -237,7 +237,7 @@ void PreviewSession::publish_locked(std::shared_ptr<const Image> linear, std::ui
     frame->mrays_per_second = mrays;
     frame->seconds = seconds;
     frame->nonfinite_samples = stats.nonfinite_samples;
-    frame->png = encode_png(image);
+    frame->png = encode_png(image, kPngFrameEncoding);
     {
         std::lock_guard lock(mutex_);
         if (generation != generation_.load()) {
