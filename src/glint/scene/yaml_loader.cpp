@@ -168,8 +168,8 @@ class Builder {
 
     SourcePos position(const yaml_mark_t& mark) { return columns_.position(file_, mark); }
 
-    void count_value(const SourcePos& pos) {
-        if (++counts_.values > kMaxSceneValues) {
+    void count_values(const SourcePos& pos, std::size_t values) {
+        if ((counts_.values += values) > kMaxSceneValues) {
             throw SceneError(pos, "the scene expands to more than " + std::to_string(kMaxSceneValues) +
                                       " values (are aliases (*name) repeating large parts of it?)");
         }
@@ -183,6 +183,15 @@ class Builder {
         }
     }
 
+    // A list or map `depth` levels down (an alias's value: its deepest part) must be fewer than
+    // kMaxSceneNesting levels down.
+    static void check_nesting(const SourcePos& pos, std::size_t depth, const std::string& through = "") {
+        if (depth >= kMaxSceneNesting) {
+            throw SceneError(pos, "the scene nests deeper than " + std::to_string(kMaxSceneNesting) +
+                                      " levels of lists and maps" + through);
+        }
+    }
+
     // The value that begins with `event`, `depth` lists and maps down; `height` is set to how many
     // levels it nests below itself.
     Node value(Event& event, std::size_t depth, std::size_t& height) {
@@ -192,7 +201,7 @@ class Builder {
         }
         Node node;
         node.pos = position(e.start_mark);
-        count_value(node.pos);
+        count_values(node.pos, 1);
         height = 0;
         const Counts before = counts_;
         const yaml_char_t* anchor = nullptr;
@@ -204,11 +213,7 @@ class Builder {
                 break;
             case YAML_SEQUENCE_START_EVENT:
             case YAML_MAPPING_START_EVENT: {
-                if (depth >= kMaxSceneNesting) {
-                    throw SceneError(node.pos, "the scene nests deeper than " +
-                                                   std::to_string(kMaxSceneNesting) +
-                                                   " levels of lists and maps");
-                }
+                check_nesting(node.pos, depth);
                 const bool is_map = e.type == YAML_MAPPING_START_EVENT;
                 anchor = is_map ? e.data.mapping_start.anchor : e.data.sequence_start.anchor;
                 if (anchor) {
@@ -309,14 +314,8 @@ class Builder {
             throw SceneError(pos, "*" + name + " is inside the value anchored &" + name +
                                       ": the value contains an alias of itself (it would be infinite)");
         }
-        if (depth + anchored.height >= kMaxSceneNesting) {
-            throw SceneError(pos, "the scene nests deeper than " + std::to_string(kMaxSceneNesting) +
-                                      " levels of lists and maps (through the alias *" + name + ")");
-        }
-        if ((counts_.values += anchored.values) > kMaxSceneValues) {
-            throw SceneError(pos, "the scene expands to more than " + std::to_string(kMaxSceneValues) +
-                                      " values (are aliases (*name) repeating large parts of it?)");
-        }
+        check_nesting(pos, depth + anchored.height, " (through the alias *" + name + ")");
+        count_values(pos, anchored.values);
         count_bytes(pos, anchored.bytes, "values");
         height = anchored.height;
         return anchored.node;
