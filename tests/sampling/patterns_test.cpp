@@ -3,8 +3,10 @@
 // properties of the low-discrepancy patterns, purity and per-pixel variation.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <functional>
+#include <map>
 #include <set>
 #include <string>
 #include <vector>
@@ -148,7 +150,9 @@ TEST(SamplePatterns, LowDiscrepancyPatternsAreBase2Nets) {
     for (const char* name : {"hammersley", "sobol"}) {
         for (std::uint32_t n : {1u, 2u, 4u, 32u, 256u, 1024u}) {
             for (std::uint32_t px = 0; px < 3; ++px) {
-                EXPECT_TRUE(is_base2_net(points_of(name, n, px, 2 * px, 5, px))) << name << " n=" << n;
+                // Sobol's lens dimension is stratified jointly with the film instead (next tests).
+                const std::uint32_t dimension = std::string(name) == "sobol" && px == kLensDimension ? 2 : px;
+                EXPECT_TRUE(is_base2_net(points_of(name, n, px, 2 * px, 5, dimension))) << name << " n=" << n;
             }
         }
     }
@@ -164,6 +168,9 @@ TEST(SamplePatterns, SobolStratifiesOnlyItsFirstDimensions) {
     for (std::uint32_t dimension = 0; dimension < 12; ++dimension) {
         const SampleKey key{7, 3, 5, 0};
         const std::vector<Point2> points = pattern_points(*sobol, key, dimension);
+        if (dimension == kLensDimension) {
+            continue;  // Sobol's dimensions 2 and 3, a (t, m, 2)-net with t ≤ 2 (next test)
+        }
         if (dimension < SobolSampler::kStratifiedDimensions) {
             EXPECT_TRUE(is_base2_net(points)) << dimension;
         } else {
@@ -176,6 +183,94 @@ TEST(SamplePatterns, SobolStratifiesOnlyItsFirstDimensions) {
                 SampleKey one = key;
                 one.sample = static_cast<std::uint32_t>(i);
                 EXPECT_EQ(sobol->sample_1d(one, dimension), points[i].x);
+            }
+        }
+    }
+}
+
+// Whether the points, each given as D binary fractions of 32 bits, form a (t, m, D)-net in base 2: every
+// elementary box of volume 2^(t−m) (D dyadic intervals whose lengths multiply to it) holds 2^t points.
+template <std::size_t D>
+bool is_base2_tmd_net(const std::vector<std::array<std::uint32_t, D>>& points, std::uint32_t t) {
+    std::uint32_t m = 0;
+    while ((std::size_t{1} << m) < points.size()) {
+        ++m;
+    }
+    if ((std::size_t{1} << m) != points.size() || t > m) {
+        return false;
+    }
+    // Every way of splitting the m − t halvings among the D axes.
+    std::array<std::uint32_t, D> halvings{};
+    const std::function<bool(std::size_t, std::uint32_t)> boxes = [&](std::size_t axis, std::uint32_t left) {
+        if (axis + 1 == D) {
+            halvings[axis] = left;
+            std::map<std::array<std::uint32_t, D>, std::uint32_t> counts;
+            for (const auto& point : points) {
+                std::array<std::uint32_t, D> box{};
+                for (std::size_t a = 0; a < D; ++a) {
+                    box[a] = halvings[a] == 0 ? 0 : point[a] >> (32 - halvings[a]);
+                }
+                ++counts[box];
+            }
+            for (const auto& [box, count] : counts) {
+                if (count != (1u << t)) {
+                    return false;
+                }
+            }
+            return counts.size() == (std::size_t{1} << (m - t));
+        }
+        for (std::uint32_t h = 0; h <= left; ++h) {
+            halvings[axis] = h;
+            if (!boxes(axis + 1, left - h)) {
+                return false;
+            }
+        }
+        return true;
+    };
+    return boxes(0, m - t);
+}
+
+TEST(SamplePatterns, SobolDimensionsTwoAndThreeMatchTheirDirectionNumbers) {
+    // Joe & Kuo's d = 3 and 4: x² + x + 1 with m = (1, 3), x³ + x + 1 with m = (1, 3, 1). By their
+    // recurrence the third direction numbers are m₃ = 2·3 ⊕ 4·1 ⊕ 1 = 3 and m₃ = 1 given, so
+    // v = (1/2, 3/4, 3/8) and (1/2, 3/4, 1/8); point i is the XOR of v_j over the set bits j of i.
+    const SobolReversedTable dimension2(kSobolDimension2);
+    const SobolReversedTable dimension3(kSobolDimension3);
+    const double expected2[] = {0, .5, .75, .25, .375, .875, .625, .125};
+    const double expected3[] = {0, .5, .75, .25, .125, .625, .875, .375};
+    for (std::uint32_t i = 0; i < 8; ++i) {
+        EXPECT_EQ(bits_to_unit(reverse_bits(dimension2(i))), expected2[i]) << i;
+        EXPECT_EQ(bits_to_unit(reverse_bits(dimension3(i))), expected3[i]) << i;
+    }
+}
+
+TEST(SamplePatterns, SobolFilmAndLensAreOneFourDimensionalNet) {
+    // The film (dimension 0) and the lens (dimension 1) are Sobol's first four dimensions of the same
+    // shuffled index, each Owen-scrambled: a (3, m, 4)-net in base 2 for n = 2^m (t = Σ (degree − 1) over
+    // the polynomials 1, x + 1, x² + x + 1, x³ + x + 1). Film and lens drawn as two independent nets,
+    // paired at random, fail this. The lens alone is a (t, m, 2)-net with t ≤ 2.
+    for (std::uint32_t m = 0; m <= 8; ++m) {
+        const auto sampler = make_sampler("sobol", 1u << m);
+        for (std::uint32_t px = 0; px < 4; ++px) {
+            const SampleKey key{11, px, 3 * px + 1, 0};
+            const std::vector<Point2> film = pattern_points(*sampler, key, kFilmDimension);
+            const std::vector<Point2> lens = pattern_points(*sampler, key, kLensDimension);
+            const std::vector<Point2> bounce = pattern_points(*sampler, key, kFirstIntegratorDimension);
+            std::vector<std::array<std::uint32_t, 4>> joint, unrelated;
+            std::vector<std::array<std::uint32_t, 2>> lens_alone;
+            const auto bits = [](double u) { return static_cast<std::uint32_t>(u * 0x1p32); };
+            for (std::size_t i = 0; i < film.size(); ++i) {
+                joint.push_back({bits(film[i].x), bits(film[i].y), bits(lens[i].x), bits(lens[i].y)});
+                unrelated.push_back({bits(film[i].x), bits(film[i].y), bits(bounce[i].x), bits(bounce[i].y)});
+                lens_alone.push_back({bits(lens[i].x), bits(lens[i].y)});
+                SampleKey one = key;
+                one.sample = static_cast<std::uint32_t>(i);
+                EXPECT_EQ(sampler->sample_1d(one, kLensDimension), lens[i].x);
+            }
+            EXPECT_TRUE(is_base2_tmd_net(joint, std::min(m, 3u))) << "m=" << m << " px=" << px;
+            EXPECT_TRUE(is_base2_tmd_net(lens_alone, std::min(m, 2u))) << "m=" << m << " px=" << px;
+            if (m == 8) {
+                EXPECT_FALSE(is_base2_tmd_net(unrelated, 3)) << px;
             }
         }
     }

@@ -51,6 +51,67 @@ constexpr std::uint32_t sobol_dimension1(std::uint32_t i) {
     return reverse_bits(sobol_dimension1_reversed(i));
 }
 
+// Sobol's dimensions 2 and 3 (counting from 0), for the lens when it is stratified jointly with the film
+// (SobolSampler): Joe & Kuo's direction numbers ("Constructing Sobol sequences with better
+// two-dimensional projections", 2008, file new-joe-kuo-6.21201, their d = 3 and 4): primitive
+// polynomials x² + x + 1 and x³ + x + 1, initial m = (1, 3) and (1, 3, 1). The recurrence is
+// m_k = 2 a₁ m_(k−1) ⊕ … ⊕ 2^(s−1) a_(s−1) m_(k−s+1) ⊕ 2^s m_(k−s) ⊕ m_(k−s), and direction number k is
+// the binary fraction m_k / 2^k.
+struct SobolDirections {
+    std::uint32_t degree;      // s
+    std::uint32_t inner;       // a: the polynomial's inner coefficients a₁ … a_(s−1), a₁ highest
+    std::uint32_t initial[4];  // m_1 … m_s
+};
+inline constexpr SobolDirections kSobolDimension2{2, 1, {1, 3}};
+inline constexpr SobolDirections kSobolDimension3{3, 1, {1, 3, 1}};
+
+// A Sobol dimension's point i for any 32-bit i, bit-reversed like sobol_dimension1_reversed: the XOR of
+// the direction numbers over i's set bits, looked up a byte of i at a time (the index scramble leaves
+// all 32 bits of i set, so a loop over them would be 32 steps).
+class SobolReversedTable {
+  public:
+    constexpr explicit SobolReversedTable(const SobolDirections& d) {
+        std::uint32_t m[33] = {};
+        for (std::uint32_t k = 1; k <= 32; ++k) {
+            if (k <= d.degree) {
+                m[k] = d.initial[k - 1];
+            } else {
+                std::uint32_t next = m[k - d.degree] ^ (m[k - d.degree] << d.degree);
+                for (std::uint32_t j = 1; j < d.degree; ++j) {
+                    if ((d.inner >> (d.degree - 1 - j)) & 1u) {
+                        next ^= m[k - j] << j;
+                    }
+                }
+                m[k] = next;
+            }
+        }
+        // Direction number k as 32 bits of fraction is m_k << (32 − k); reversed, m_k reversed >> ... is
+        // simply reverse_bits of it. XOR commutes with the reversal, so the tables hold reversed sums.
+        std::uint32_t reversed[32] = {};
+        for (std::uint32_t k = 1; k <= 32; ++k) {
+            reversed[k - 1] = reverse_bits(m[k] << (32 - k));
+        }
+        for (std::uint32_t byte = 0; byte < 4; ++byte) {
+            for (std::uint32_t value = 0; value < 256; ++value) {
+                std::uint32_t sum = 0;
+                for (std::uint32_t bit = 0; bit < 8; ++bit) {
+                    if ((value >> bit) & 1u) {
+                        sum ^= reversed[8 * byte + bit];
+                    }
+                }
+                table_[byte][value] = sum;
+            }
+        }
+    }
+    constexpr std::uint32_t operator()(std::uint32_t i) const {
+        return table_[0][i & 0xffu] ^ table_[1][(i >> 8) & 0xffu] ^ table_[2][(i >> 16) & 0xffu] ^
+               table_[3][i >> 24];
+    }
+
+  private:
+    std::uint32_t table_[4][256] = {};
+};
+
 // Laine & Karras' hash ("Stratified sampling for stochastic transparency", 2011) in Burley's improved
 // form ("Practical Hash-based Owen Scrambling", JCGT 2020). Bit j of the result depends only on bits
 // 0 … j of x, so on bit-reversed values it is a nested uniform (Owen) scramble.
