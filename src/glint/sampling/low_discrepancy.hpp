@@ -85,8 +85,8 @@ class SobolReversedTable {
                 m[k] = next;
             }
         }
-        // Direction number k as 32 bits of fraction is m_k << (32 − k); reversed, m_k reversed >> ... is
-        // simply reverse_bits of it. XOR commutes with the reversal, so the tables hold reversed sums.
+        // Direction number k as 32 bits of fraction is m_k << (32 − k); the tables hold sums of them
+        // bit-reversed (XOR commutes with the reversal), the form the scramble works on.
         std::uint32_t reversed[32] = {};
         for (std::uint32_t k = 1; k <= 32; ++k) {
             reversed[k - 1] = reverse_bits(m[k] << (32 - k));
