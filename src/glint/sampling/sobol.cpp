@@ -23,7 +23,9 @@ struct ReversedPoint {
     std::uint64_t scramble_seeds;
 };
 
-ReversedPoint reversed_point(const SampleHashes& key, std::uint32_t dimension) {
+// Inlined: a call of its own cost sample_2d 4 % more instructions on the Cornell box.
+__attribute__((always_inline)) inline ReversedPoint reversed_point(const SampleHashes& key,
+                                                                   std::uint32_t dimension) {
     const std::uint64_t seeds = key.pixel_bits(dimension);
     // The point's two seeds, drawn while the index is scrambled.
     const std::uint64_t scramble_seeds = mix64(seeds);
