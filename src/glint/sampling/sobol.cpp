@@ -23,7 +23,7 @@ struct ReversedPoint {
     std::uint64_t scramble_seeds;
 };
 
-// Inlined: a call of its own cost sample_2d 4 % more instructions on the Cornell box.
+// Inlined: a call of its own made the Cornell box run 0.7 % more instructions.
 __attribute__((always_inline)) inline ReversedPoint reversed_point(const SampleHashes& key,
                                                                    std::uint32_t dimension) {
     const std::uint64_t seeds = key.pixel_bits(dimension);
