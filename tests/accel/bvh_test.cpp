@@ -579,7 +579,7 @@ TEST(Bvh, RectanglesFourAtATimeGiveTheOneAtATimeBits) {
 // its box; that may only save time. Against the brute-force list, which tests every shape: the same
 // hit, bit for bit, and the same occlusion, for rays aimed at the corners and edges of rotated boxes,
 // along their faces' planes, from points on their faces and from inside them.
-TEST(Bvh, TheFlatListsBoxTestsNeverLoseAHit) {
+void expect_flat_box_tests_lose_no_hit(bool four_at_a_time) {
     const Transform tall_place = Transform::rotate({0, 1, 0}, 15).then(Transform::translate({265, 0, 295}));
     const Transform short_place = Transform::rotate({0, 1, 0}, -18).then(Transform::translate({130, 0, 65}));
     const Vec3 tall_size{165, 330, 165}, short_size{165, 165, 165};
@@ -589,6 +589,10 @@ TEST(Bvh, TheFlatListsBoxTestsNeverLoseAHit) {
     shapes.push_back(std::make_unique<Instance>(std::make_unique<Box>(Vec3{}, short_size), short_place));
     shapes.push_back(std::make_unique<Mesh>(test::tessellated_sphere(2, 40.0, {400, 450, 150})));
     shapes.push_back(std::make_unique<Box>(Vec3{50, 400, 400}, Vec3{150, 500, 500}));  // axis-aligned
+    if (four_at_a_time) {
+        shapes.push_back(std::make_unique<Rectangle>(Vec3{0, 555, 0}, Vec3{555, 0, 0}, Vec3{0, 0, 555}));
+        shapes.push_back(std::make_unique<Rectangle>(Vec3{0, 0, 555}, Vec3{555, 0, 0}, Vec3{0, 555, 0}));
+    }
     const auto ptrs = pointers(shapes);
     const LinearAccelerator list(ptrs);
     const BvhAccelerator flat(ptrs);
@@ -632,6 +636,15 @@ TEST(Bvh, TheFlatListsBoxTestsNeverLoseAHit) {
         }
     }
     EXPECT_GT(hits, 20000);
+}
+
+// With two more rectangles the list has three, and its boxes are tested four at a time with AVX2
+// (culling_box_lanes) instead of one at a time: both are checked.
+TEST(Bvh, TheFlatListsBoxTestsNeverLoseAHit) {
+    for (const bool four_at_a_time : {false, true}) {
+        SCOPED_TRACE(four_at_a_time ? "four at a time" : "one at a time");
+        expect_flat_box_tests_lose_no_hit(four_at_a_time);
+    }
 }
 
 TEST(Bvh, ScalarTraversalGivesTheSameHitsAsAvx2) {

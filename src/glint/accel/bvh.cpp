@@ -48,6 +48,12 @@ void BvhAccelerator::ShapeList::add(const Shape* shape, std::uint32_t index) {
             box = Bounds3::infinite();
         }
         culling_boxes.push_back(box);
+        RectangleBlock& block = rectangles.back();
+        const int lane = static_cast<int>(shapes.size() % 4);
+        for (int axis = 0; axis < 3; ++axis) {
+            block.box_lo[axis][lane] = box.lo[axis];
+            block.box_hi[axis][lane] = box.hi[axis];
+        }
     }
     shapes.push_back(shape);
     scene_index.push_back(index);
@@ -240,13 +246,38 @@ __attribute__((target("avx2"))) inline unsigned test_rectangle_lanes(const Block
     return static_cast<unsigned>(_mm256_movemask_pd(hit));
 }
 
+// ray_may_meet for the four culling boxes of a block at once, operation for operation in the same
+// order, so each lane's answer is the scalar function's. Returns the lanes whose box the ray may meet.
+// (The Cornell box's two instanced boxes made two scalar box tests a ray and a shadow ray.)
+template <class Block>
+__attribute__((target("avx2"))) inline unsigned culling_box_lanes(const Block& block, const Ray& ray,
+                                                                  const Vec3& inv, double t_max) {
+    const __m256d widen = _mm256_set1_pd(1 + 6 * std::numeric_limits<double>::epsilon());
+    __m256d t0 = _mm256_setzero_pd();
+    __m256d t1 = _mm256_set1_pd(t_max);
+    for (int axis = 0; axis < 3; ++axis) {
+        const __m256d origin = _mm256_set1_pd(ray.origin[axis]);
+        const __m256d inverse = _mm256_set1_pd(inv[axis]);
+        const __m256d a = mul(sub(load(block.box_lo[axis]), origin), inverse);
+        const __m256d b = mul(sub(load(block.box_hi[axis]), origin), inverse);
+        // near = a > b ? b : a; far = (a > b ? a : b) · widen; a NaN compares false, as in the scalar test.
+        const __m256d swapped = _mm256_cmp_pd(a, b, _CMP_GT_OQ);
+        const __m256d near = _mm256_blendv_pd(a, b, swapped);
+        const __m256d far = mul(_mm256_blendv_pd(b, a, swapped), widen);
+        t0 = _mm256_blendv_pd(t0, near, _mm256_cmp_pd(near, t0, _CMP_GT_OQ));
+        t1 = _mm256_blendv_pd(t1, far, _mm256_cmp_pd(far, t1, _CMP_LT_OQ));
+    }
+    return static_cast<unsigned>(_mm256_movemask_pd(_mm256_cmp_pd(t0, t1, _CMP_LE_OQ)));
+}
+
 // The group of (up to) four entries of `list` from i, in a range that ends before `end`: lanes past
 // the end are dropped. In a list with rectangles (whose groups start at multiples of four), rectangle
-// lanes are tested too and reported with the spheres'.
+// lanes are tested too and reported with the spheres', and other lanes only when the ray may meet their
+// culling box (the list's own shapes' tests then skip that box).
 template <class ShapeList>
 __attribute__((target("avx2"))) inline SphereLanes test_group(const ShapeList& list, std::uint32_t i,
                                                               std::uint32_t end, const Ray& ray,
-                                                              double t_limit) {
+                                                              const Vec3& inv_direction, double t_limit) {
     const unsigned in_range = (1u << std::min<std::uint32_t>(end - i, 4)) - 1;
     if (!list.with_rectangles) {
         SphereLanes lanes =
@@ -271,6 +302,10 @@ __attribute__((target("avx2"))) inline SphereLanes test_group(const ShapeList& l
     const unsigned inline_lanes = block.spheres | block.rectangles;
     lanes.hit &= in_range;
     lanes.other = ~inline_lanes & in_range;
+    if (lanes.other != 0) {
+        // Only the other shapes whose culling box the ray may meet are left for their own tests.
+        lanes.other &= culling_box_lanes(block, ray, inv_direction, t_limit);
+    }
     return lanes;
 }
 #endif
@@ -347,8 +382,9 @@ bool BvhAccelerator::intersect_with(const Ray& ray, double t_max, Hit& hit) cons
         }
     };
     const Vec3 inv_direction = culling_inverse(ray);
-    const auto test_other = [&](const ShapeList& list, std::uint32_t i, double& t_limit) {
-        if (!list.culling_boxes.empty() &&
+    // box_tested: test_group has tested the culling box already.
+    const auto test_other = [&](const ShapeList& list, std::uint32_t i, double& t_limit, bool box_tested) {
+        if (!box_tested && !list.culling_boxes.empty() &&
             !ray_may_meet(list.culling_boxes[i], ray, inv_direction, t_limit)) {
             return false;
         }
@@ -372,13 +408,14 @@ bool BvhAccelerator::intersect_with(const Ray& ray, double t_max, Hit& hit) cons
         if (decltype(four_at_a_time)::value && count >= kFewestSpheresForFour) {
             const std::uint32_t end = first + count;
             for (std::uint32_t i = first; i < end; i += 4) {
-                const SphereLanes lanes = test_group(list, i, end, ray, t_limit);
+                const SphereLanes lanes = test_group(list, i, end, ray, inv_direction, t_limit);
                 // The lanes' t's were found against the t_limit of the group's start; walking them in
                 // order against the t_limit of the moment gives what the one-at-a-time loop gives.
+                // (A box culled against that t_limit is culled against the lower one of the moment too.)
                 for (unsigned todo = lanes.hit | lanes.other; todo != 0; todo &= todo - 1) {
                     const auto lane = static_cast<unsigned>(__builtin_ctz(todo));
                     if ((lanes.other >> lane) & 1) {
-                        found |= test_other(list, i + lane, t_limit);
+                        found |= test_other(list, i + lane, t_limit, list.with_rectangles);
                     } else if (lanes.t[lane] < t_limit) {
                         take_sphere(list, i + lane, lanes.t[lane], t_limit);
                         nearest_is_rectangle =
@@ -406,7 +443,7 @@ bool BvhAccelerator::intersect_with(const Ray& ray, double t_max, Hit& hit) cons
                     found = true;
                 }
             } else {
-                found |= test_other(list, i, t_limit);
+                found |= test_other(list, i, t_limit, false);
             }
         }
         return found;
@@ -437,8 +474,8 @@ bool BvhAccelerator::intersect_with(const Ray& ray, double t_max, Hit& hit) cons
 template <bool kFourSpheres>
 bool BvhAccelerator::occluded_with(const Ray& ray, double t_max) const {
     const Vec3 inv_direction = culling_inverse(ray);
-    const auto other_occludes = [&](const ShapeList& list, std::uint32_t i, double t_limit) {
-        return (list.culling_boxes.empty() ||
+    const auto other_occludes = [&](const ShapeList& list, std::uint32_t i, double t_limit, bool box_tested) {
+        return (box_tested || list.culling_boxes.empty() ||
                 ray_may_meet(list.culling_boxes[i], ray, inv_direction, t_limit)) &&
                list.shapes[i]->occluded(ray, t_limit);
     };
@@ -448,12 +485,13 @@ bool BvhAccelerator::occluded_with(const Ray& ray, double t_max) const {
         if (decltype(four_at_a_time)::value && count >= kFewestSpheresForFour) {
             const std::uint32_t end = first + count;
             for (std::uint32_t i = first; i < end; i += 4) {
-                const SphereLanes lanes = test_group(list, i, end, ray, t_limit);
+                const SphereLanes lanes = test_group(list, i, end, ray, inv_direction, t_limit);
                 if (lanes.hit != 0) {
                     return true;
                 }
                 for (unsigned others = lanes.other; others != 0; others &= others - 1) {
-                    if (other_occludes(list, i + static_cast<unsigned>(__builtin_ctz(others)), t_limit)) {
+                    if (other_occludes(list, i + static_cast<unsigned>(__builtin_ctz(others)), t_limit,
+                                       list.with_rectangles)) {
                         return true;
                     }
                 }
@@ -464,7 +502,7 @@ bool BvhAccelerator::occluded_with(const Ray& ray, double t_max) const {
         for (std::uint32_t i = first; i < first + count; ++i) {
             const LeafSphere& sphere = list.spheres[i];
             if (sphere.radius > 0 ? sphere_occludes(sphere.center, sphere.radius, ray, t_limit)
-                                  : other_occludes(list, i, t_limit)) {
+                                  : other_occludes(list, i, t_limit, false)) {
                 return true;
             }
         }
