@@ -10,7 +10,9 @@ namespace glint {
 // 0 … 2^k−1 onto one aligned block of 2^k Sobol points, so for n = 2^k every pixel gets a (0, k, 2)-net:
 // one point in each elementary interval of area 1/n (in particular one per cell of the √n × √n grid
 // when k is even, and perfect 1-D strata). Any n works and is taken as is; the guarantees are at
-// powers of two.
+// powers of two. The lens (kLensDimension) is the exception: it takes Sobol's dimensions 2 and 3 of the
+// film's index, so that film and lens are one 4-D Sobol point, a (3, k, 4)-net (the lens alone a
+// (t, k, 2)-net with t ≤ 2), stratified together instead of paired at random.
 //
 // Only the first kStratifiedDimensions 2-D dimensions are Sobol points: the film, the lens and the
 // first two bounces' light and BSDF samples (or the first four bounces' BSDF samples in a scene without
