@@ -108,8 +108,8 @@ class WideBvh {
     }
     // Whether traversal uses the AVX2 path: when the CPU has AVX2 and FMA, unless a test asked for the
     // scalar path (so both paths are tested on any machine).
-    static bool uses_avx2() { return cpu_has_avx2() && !scalar_forced().load(std::memory_order_relaxed); }
-    static void force_scalar_traversal(bool on) { scalar_forced().store(on); }
+    static bool uses_avx2() { return avx2_in_use_.load(std::memory_order_relaxed); }
+    static void force_scalar_traversal(bool on) { avx2_in_use_.store(!on && cpu_has_avx2()); }
     static bool cpu_has_avx2();
 
     // Nearest hit. `leaf(first, count, t_max, avx2)` tests primitives [first, first + count) for hits
@@ -152,10 +152,9 @@ class WideBvh {
             __builtin_prefetch(p + offset);
         }
     }
-    static std::atomic<bool>& scalar_forced() {
-        static std::atomic<bool> forced{false};
-        return forced;
-    }
+    // uses_avx2()'s answer, asked twice for every ray: the CPU's, found once at start-up, unless a test
+    // forced the scalar path. (Until start-up has set it, false: the scalar path, which every CPU runs.)
+    static inline std::atomic<bool> avx2_in_use_{cpu_has_avx2()};
     template <bool kAnyHit, class NodeTest, class Leaf>
     bool traverse(const Ray& ray, double& t_max, Leaf& leaf) const;
 #ifdef GLINT_BVH_HAVE_AVX2_PATH
