@@ -210,7 +210,9 @@ struct WideBvh::TraversalRay {
             if (!(std::abs(inverse) < largest_inverse)) {
                 inverse = std::signbit(ray.direction[a]) ? -largest_inverse : largest_inverse;
             }
-            inv[a] = saturate_to_float(inverse);
+            // |inverse| ≤ largest_inverse ≤ 1e30 fits a float: no saturation needed (saturate_to_float's
+            // two tests, for three axes of every ray, were 1.4 % of the instructions of RTIOW's final scene).
+            inv[a] = static_cast<float>(inverse);
             origin_inv[a] = saturate_to_float(ray.origin[a] * inverse);
             const bool negative = inv[a] < 0;
             const int lo = static_cast<int>(a * WideBvhNode::kWidth * sizeof(float));
