@@ -22,18 +22,20 @@ def main():
     runs, scene, spp = int(sys.argv[1]), sys.argv[2], sys.argv[3]
     binaries = sys.argv[4:6]
     extra = sys.argv[6:]
-    if '--threads' not in extra:
+    if not any(a == '--threads' or a.startswith('--threads=') for a in extra):
         extra += ['--threads', '1']
-    times = {b: [] for b in binaries}
+    # By position, so that A/A (the same binary twice, to see the noise) keeps two lists.
+    times = [[], []]
     with tempfile.TemporaryDirectory() as tmp:
         out = os.path.join(tmp, 'render.pfm')
         for i in range(runs):
-            for binary in binaries if i % 2 == 0 else binaries[::-1]:
+            for which in (0, 1) if i % 2 == 0 else (1, 0):
                 before = resource.getrusage(resource.RUSAGE_CHILDREN)
-                subprocess.run([binary, 'render', scene, '--spp', spp, '-q', '-o', out] + extra, check=True)
+                subprocess.run([binaries[which], 'render', scene, '--spp', spp, '-q', '-o', out] + extra,
+                               check=True)
                 after = resource.getrusage(resource.RUSAGE_CHILDREN)
-                times[binary].append(after.ru_utime - before.ru_utime)
-    a, b = (statistics.median(times[x]) for x in binaries)
+                times[which].append(after.ru_utime - before.ru_utime)
+    a, b = (statistics.median(t) for t in times)
     print(f'{scene} at {spp} spp: A {a:.3f} s, B {b:.3f} s (medians of {runs}), B/A {b / a:.4f}')
 
 

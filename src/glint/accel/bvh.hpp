@@ -53,8 +53,8 @@ class BvhAccelerator final : public Accelerator {
     // shapes hold zeros and are never read.
     struct alignas(32) RectangleBlock {
         double corner[3][4] = {}, normal[3][4] = {}, dual1[3][4] = {}, dual2[3][4] = {};
-        // The culling boxes (culling_boxes) of the block's other shapes, tested four at a time before
-        // their own tests; the lanes of spheres and rectangles, never read, hold empty boxes.
+        // The culling boxes (culling_boxes) of the block's shapes, every lane its shape's (padding lanes
+        // zeros), tested four at a time; only the answers of the other shapes' lanes are kept.
         double box_lo[3][4] = {}, box_hi[3][4] = {};
         unsigned rectangles = 0;  // the lanes (bit i for entry 4g + i) that are rectangles
         unsigned spheres = 0;     // and those that are spheres (a block without any skips their test)

@@ -152,8 +152,9 @@ class WideBvh {
             __builtin_prefetch(p + offset);
         }
     }
-    // uses_avx2()'s answer, asked twice for every ray: the CPU's, found once at start-up, unless a test
-    // forced the scalar path. (Until start-up has set it, false: the scalar path, which every CPU runs.)
+    // uses_avx2()'s answer, asked twice for every ray: the CPU's, found once when the program starts
+    // (before main; nothing traverses a tree during static initialisation), unless a test forced the
+    // scalar path.
     static inline std::atomic<bool> avx2_in_use_{cpu_has_avx2()};
     template <bool kAnyHit, class NodeTest, class Leaf>
     bool traverse(const Ray& ray, double& t_max, Leaf& leaf) const;

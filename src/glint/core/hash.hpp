@@ -127,7 +127,8 @@ class SampleHashes {
     }
 
     constexpr std::uint32_t sample() const { return sample_index_; }
-    // reverse_bits(sample()), kept because a low-discrepancy sampler scrambles it in every dimension.
+    // reverse_bits(sample()), kept because a low-discrepancy sampler scrambles it in (almost) every
+    // dimension.
     constexpr std::uint32_t sample_reversed() const { return sample_index_reversed_; }
     // 64 random bits shared by every sample of the pixel in `dimension`: a pattern's scramble.
     constexpr std::uint64_t pixel_bits(std::uint32_t dimension) const {

@@ -1,5 +1,5 @@
 // The building blocks of the low-discrepancy patterns (Hammersley, Halton, Sobol): radical inverses,
-// the first two Sobol dimensions, and the scrambles that give every pixel its own randomised copy.
+// Sobol dimensions 0 to 3, and the scrambles that give every pixel its own randomised copy.
 #pragma once
 
 #include <cstdint>

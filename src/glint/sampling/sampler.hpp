@@ -5,7 +5,8 @@
 // (seed, pixel, sample index, dimension), so any sample can be computed alone, in any order.
 // "Dimension" numbers the independent 2-D patterns one camera path consumes: 0 is the position on the
 // film, 1 the position on the lens, 2 and up are used by lights and materials. Each dimension (and each
-// pixel) gets its own scramble, so patterns are not correlated across dimensions or neighbours.
+// pixel) gets its own scramble, so patterns are not correlated across dimensions or neighbours; the one
+// exception is `sobol`'s lens, stratified jointly with the film on purpose (sobol.hpp).
 // Samplers are asked with SampleHashes, the key's hashes computed once per sample (a plain SampleKey
 // converts), and draw each dimension's numbers from them with one mix64: the per-sample cost of a
 // pattern is that and its own arithmetic.

@@ -31,7 +31,8 @@ const NameTable<SamplerEntry>& sampler_table() {
         {"halton", "(Φ₂(i), Φ₃(i)), Owen-scrambled per pixel",
          [](std::uint32_t n) { return std::make_unique<HaltonSampler>(n); }},
         {"sobol",
-         "the first two Sobol dimensions, Owen-scrambled per pixel (Burley 2020); random past the sixth",
+         "Sobol points, Owen-scrambled per pixel (Burley 2020); film and lens one 4-D point; random past the "
+         "sixth",
          [](std::uint32_t n) { return std::make_unique<SobolSampler>(n); }},
     };
     return table;

@@ -12,7 +12,8 @@ namespace glint {
 // when k is even, and perfect 1-D strata). Any n works and is taken as is; the guarantees are at
 // powers of two. The lens (kLensDimension) is the exception: it takes Sobol's dimensions 2 and 3 of the
 // film's index, so that film and lens are one 4-D Sobol point, a (3, k, 4)-net (the lens alone a
-// (t, k, 2)-net with t ≤ 2), stratified together instead of paired at random.
+// (t, k, 2)-net with t ≤ 3, and t ≤ 2 up to 2^16 samples), stratified together instead of paired at
+// random.
 //
 // Only the first kStratifiedDimensions 2-D dimensions are Sobol points: the film, the lens and the
 // first two bounces' light and BSDF samples (or the first four bounces' BSDF samples in a scene without
