@@ -78,6 +78,19 @@ class ByteColumns {
     std::size_t char_ = 0, byte_;  // character char_ starts at byte byte_
 };
 
+// The 1-based line and byte column of byte `offset` of the file's text (clamped to its end): for what
+// is found by byte, not by libyaml's marks (a zero byte, bad UTF-8).
+SourcePos position_of_byte(const std::shared_ptr<const SourceFile>& file, std::size_t offset) {
+    const std::string& text = file->text;
+    offset = std::min(offset, text.size());
+    const std::size_t line_start = offset == 0 ? std::string::npos : text.rfind('\n', offset - 1);
+    const std::size_t column = line_start == std::string::npos ? offset : offset - line_start - 1;
+    return {file,
+            1 + static_cast<int>(
+                    std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(offset), '\n')),
+            1 + static_cast<int>(column)};
+}
+
 // One libyaml event, deleted when it goes.
 struct Event {
     yaml_event_t event{};
@@ -139,7 +152,7 @@ class Builder {
             return SceneError({file_, 0, 0}, "out of memory while reading the scene");
         }
         if (parser_.error == YAML_READER_ERROR) {  // bad UTF-8: its byte offset, not a mark
-            return SceneError(at_byte(parser_.problem_offset),
+            return SceneError(position_of_byte(file_, parser_.problem_offset),
                               std::string("the scene is not UTF-8 text here (") +
                                   (parser_.problem ? parser_.problem : "unreadable") +
                                   "): a scene file is UTF-8");
@@ -153,17 +166,6 @@ class Builder {
             }
         }
         return SceneError(position(parser_.problem_mark), message);
-    }
-
-    SourcePos at_byte(std::size_t offset) const {
-        const std::string& text = file_->text;
-        offset = std::min(offset, text.size());
-        const std::size_t line_start = offset == 0 ? std::string::npos : text.rfind('\n', offset - 1);
-        const std::size_t column = line_start == std::string::npos ? offset : offset - line_start - 1;
-        return {file_,
-                1 + static_cast<int>(
-                        std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(offset), '\n')),
-                1 + static_cast<int>(column)};
     }
 
     SourcePos position(const yaml_mark_t& mark) { return columns_.position(file_, mark); }
@@ -345,14 +347,8 @@ void check_encoding(const std::string& text, const std::shared_ptr<const SourceF
     }
     const std::size_t zero = text.find('\0');
     if (encoding || zero != std::string::npos) {
-        SourcePos pos{file, 0, 0};
-        if (!encoding) {
-            // Point at the zero byte: its line and column in the text as read.
-            pos.line =
-                1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(zero), '\n'));
-            const std::size_t line_start = text.rfind('\n', zero);
-            pos.column = static_cast<int>(zero - (line_start == std::string::npos ? 0 : line_start + 1)) + 1;
-        }
+        // At the zero byte: its line and column in the text as read.
+        const SourcePos pos = encoding ? SourcePos{file, 0, 0} : position_of_byte(file, zero);
         throw SceneError(pos, encoding ? std::string("the scene file is ") + encoding +
                                              " text; glint reads UTF-8 (save it as UTF-8)"
                                        : "a zero byte: a scene file is UTF-8 text (is this a binary or "
