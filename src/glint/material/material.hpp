@@ -111,7 +111,12 @@ class Bsdf {
         return evaluate_local(frame_.to_local(wo), frame_.to_local(wi));
     }
     std::optional<BsdfSample> sample(const Vec3& wo, Point2 u) const {
-        std::optional<BsdfSample> s = sample_local(frame_.to_local(wo), u);
+        return sample_from_local(frame_.to_local(wo), u);
+    }
+    // sample(), from wo already in the shading frame (for a caller that turns it once for several calls);
+    // the sample's wi in world space.
+    std::optional<BsdfSample> sample_from_local(const Vec3& wo_local, Point2 u) const {
+        std::optional<BsdfSample> s = sample_local(wo_local, u);
         if (s) {
             s->wi = frame_.to_world(s->wi);
         }
