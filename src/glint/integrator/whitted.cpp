@@ -8,14 +8,6 @@
 
 namespace glint {
 
-Rgb segment_transmittance(const Material& material, const Hit& hit, const Ray& ray) {
-    if (dot(ray.direction, hit.normal) <= 0) {
-        return Rgb(1.0);  // arrived from outside: the segment ran through air
-    }
-    const Rgb sigma = material.absorption();
-    return sigma.is_black() ? Rgb(1.0) : beer_transmittance(sigma, hit.t * length(ray.direction));
-}
-
 // The recursion of Whitted's model, L(ray) = T · (Le + direct + Σ lobe · L(branch)), is run as a loop
 // over an explicit stack of pending branches, in the order the recursion would take them (a node, its
 // first branch's whole subtree, then its second), so the random numbers go to the same places. A

@@ -1,12 +1,10 @@
 #pragma once
 
+#include "glint/geometry/hit.hpp"
 #include "glint/integrator/integrator.hpp"
+#include "glint/material/material.hpp"
 
 namespace glint {
-
-class Material;
-struct Hit;
-struct Ray;
 
 // Whitted's model (1980; the paper §VI–VIII): at each surface the ambient term, direct light from every
 // light with shadow rays (hard, or soft from lights with area and several samples), plus recursive
@@ -28,6 +26,13 @@ class WhittedIntegrator final : public Integrator {
 
 // Beer's law along a ray segment that ended at `hit`: a ray that meets a surface from inside
 // (dot(direction, normal) > 0) crossed that surface's material, which keeps beer_transmittance of it.
-Rgb segment_transmittance(const Material& material, const Hit& hit, const Ray& ray);
+// Inline: every path vertex asks, and nearly all arrive from outside (a call was 0.8 % of RTIOW's scene).
+inline Rgb segment_transmittance(const Material& material, const Hit& hit, const Ray& ray) {
+    if (dot(ray.direction, hit.normal) <= 0) {
+        return Rgb(1.0);  // arrived from outside: the segment ran through air
+    }
+    const Rgb sigma = material.absorption();
+    return sigma.is_black() ? Rgb(1.0) : beer_transmittance(sigma, hit.t * length(ray.direction));
+}
 
 }  // namespace glint
