@@ -429,6 +429,28 @@ TEST(SamplePatterns, NeighbouringPixelsAndDimensionsGetDifferentPatterns) {
     }
 }
 
+TEST(SamplePatterns, FilmAndLensInOneCallAreTheirDimensionsPoints) {
+    // The camera asks for both in one call (sobol shuffles their shared index once): the same bits as
+    // asking each dimension alone, for every pattern and several counts, pixels and samples.
+    for (const std::string& name : kAllPatterns) {
+        for (const std::uint32_t n : {1u, 7u, 16u, 64u}) {
+            const auto sampler = make_sampler(name, n);
+            for (std::uint32_t px = 0; px < 5; ++px) {
+                for (std::uint32_t s = 0; s < sampler->samples_per_pixel(); ++s) {
+                    const SampleHashes key(SampleKey{3, px, 2 * px + 1, s});
+                    const FilmAndLens both = sampler->sample_film_and_lens(key);
+                    const Point2 film = sampler->sample_2d(key, kFilmDimension);
+                    const Point2 lens = sampler->sample_2d(key, kLensDimension);
+                    ASSERT_EQ(both.film.x, film.x) << name << " n=" << n << " px=" << px << " s=" << s;
+                    ASSERT_EQ(both.film.y, film.y) << name << " n=" << n << " px=" << px << " s=" << s;
+                    ASSERT_EQ(both.lens.x, lens.x) << name << " n=" << n << " px=" << px << " s=" << s;
+                    ASSERT_EQ(both.lens.y, lens.y) << name << " n=" << n << " px=" << px << " s=" << s;
+                }
+            }
+        }
+    }
+}
+
 TEST(SamplePatterns, FilmAndLensDimensionsAreUncorrelated) {
     // Over many pixels, the film x and lens x of one sample must not be correlated (a pattern reusing
     // the same index order in both dimensions would give a correlation near 1).

@@ -12,9 +12,11 @@
 namespace glint {
 
 std::optional<Ray> camera_ray(const View& view, const SampleHashes& key, int x, int y) {
-    const Point2 offset = view.settings.filter.offset(view.sampler->sample_2d(key, kFilmDimension));
-    const Point2 lens = view.camera->uses_lens() ? view.sampler->sample_2d(key, kLensDimension) : Point2{};
-    const Ray ray = view.camera->generate_ray({x + offset.x, y + offset.y}, lens);
+    const FilmAndLens sample = view.camera->uses_lens()
+                                   ? view.sampler->sample_film_and_lens(key)
+                                   : FilmAndLens{view.sampler->sample_2d(key, kFilmDimension), {}};
+    const Point2 offset = view.settings.filter.offset(sample.film);
+    const Ray ray = view.camera->generate_ray({x + offset.x, y + offset.y}, sample.lens);
     if (!sees_scene(ray)) {
         return std::nullopt;
     }

@@ -24,6 +24,17 @@
 
 namespace glint {
 
+// The dimensions the renderer reserves before handing the stream to the integrator.
+inline constexpr std::uint32_t kFilmDimension = 0;
+inline constexpr std::uint32_t kLensDimension = 1;
+inline constexpr std::uint32_t kFirstIntegratorDimension = 2;
+
+// A camera sample's points on the film (kFilmDimension) and on the lens (kLensDimension).
+struct FilmAndLens {
+    Point2 film;
+    Point2 lens;
+};
+
 class Sampler {
   public:
     virtual ~Sampler() = default;
@@ -44,6 +55,12 @@ class Sampler {
     // pattern but random (regular and jittered, whose x has only √n strata, override this).
     virtual double sample_1d(const SampleHashes& key, std::uint32_t dimension) const {
         return sample_2d(key, dimension).x;
+    }
+
+    // sample_2d in the film's and the lens's dimensions, in one call: a pattern that derives both from
+    // one shuffled index (sobol) computes it once.
+    virtual FilmAndLens sample_film_and_lens(const SampleHashes& key) const {
+        return {sample_2d(key, kFilmDimension), sample_2d(key, kLensDimension)};
     }
 };
 
@@ -72,11 +89,6 @@ class SampleStream {
     SampleHashes key_;
     std::uint32_t dimension_;
 };
-
-// The dimensions the renderer reserves before handing the stream to the integrator.
-inline constexpr std::uint32_t kFilmDimension = 0;
-inline constexpr std::uint32_t kLensDimension = 1;
-inline constexpr std::uint32_t kFirstIntegratorDimension = 2;
 
 // The name → constructor table of sample patterns ("random", "jittered", …).
 using SamplerFactory = std::function<std::unique_ptr<Sampler>(std::uint32_t samples_per_pixel)>;

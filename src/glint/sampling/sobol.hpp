@@ -32,6 +32,9 @@ class SobolSampler final : public Sampler {
     Point2 sample_2d(const SampleHashes& key, std::uint32_t dimension) const override;
     // The x of sample_2d, without computing its y.
     double sample_1d(const SampleHashes& key, std::uint32_t dimension) const override;
+    // The film's and the lens's points with the index they share shuffled once (the same bits as two
+    // sample_2d calls; 0.9 % of the instructions of RTIOW's final scene saved).
+    FilmAndLens sample_film_and_lens(const SampleHashes& key) const override;
 
   private:
     std::uint32_t n_;
