@@ -84,7 +84,15 @@ std::optional<SeenSample> Sphere::sample_seen_from(const Vec3& ref, Point2 u) co
 }
 
 double Sphere::pdf_seen_from(const Vec3& ref, const Vec3& wi, const Hit& on_shape) const {
+    return pdf_seen_from(ref, wi, on_shape.point, on_shape.normal);
+}
+
+double Sphere::pdf_seen_from(const Vec3& ref, const Vec3& wi, const Vec3& point, const Vec3& normal) const {
     if (!seen_from_outside(ref)) {
+        Hit on_shape;
+        on_shape.point = point;
+        on_shape.normal = normal;
+        on_shape.shading_normal = normal;
         return Shape::pdf_seen_from(ref, wi, on_shape);
     }
     return 1 / (2 * kPi * one_minus_cos_max(sqr(radius_) / length_squared(center_ - ref)));

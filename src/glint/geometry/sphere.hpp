@@ -69,6 +69,9 @@ class Sphere final : public Shape {
     // by area, as every shape.
     std::optional<SeenSample> sample_seen_from(const Vec3& ref, Point2 u) const override;
     double pdf_seen_from(const Vec3& ref, const Vec3& wi, const Hit& on_shape) const override;
+    // The same for the point `point` of outward normal `normal`, all it reads of the Hit: for callers
+    // that have no Hit record, to spare them building one (LightVisibility's mixture density).
+    double pdf_seen_from(const Vec3& ref, const Vec3& wi, const Vec3& point, const Vec3& normal) const;
     bool samples_by_area() const override { return false; }
     const Vec3& center() const { return center_; }
     double radius() const { return radius_; }

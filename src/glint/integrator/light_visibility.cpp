@@ -89,11 +89,7 @@ std::optional<SphereCap> cap_from(const AreaLight& light, const Sphere& sphere, 
 // `point` with outward unit normal `normal`.
 double cap_mixture_pdf(const SphereCap& cap, const Vec3& ref, const Vec3& wi, const Vec3& point,
                        const Vec3& normal) {
-    Hit on_sphere;
-    on_sphere.point = point;
-    on_sphere.normal = normal;
-    on_sphere.shading_normal = normal;
-    const double cone = cap.sphere->pdf_seen_from(ref, wi, on_sphere);
+    const double cone = cap.sphere->pdf_seen_from(ref, wi, point, normal);
     double in_cap = 0;
     const double cos_light = std::abs(dot(wi, normal));
     if (dot(normal, cap.frame.n) >= cap.cos_max && cos_light > 0) {

@@ -58,7 +58,11 @@ std::optional<LightSample> AreaLight::sample(const Hit& at, Point2 u) const {
 }
 
 std::optional<LightSample> AreaLight::sample_of(const SeenSample& seen) const {
-    return light_sample(seen, material_->emitted(light_hit(seen.point, seen.normal), -seen.wi));
+    // An AreaEmitter reads only the normal: no Hit record to build for it (every light sample of
+    // smallpt's sphere comes here).
+    const Rgb radiance = emitter_ ? emitter_->emitted_from(seen.normal, -seen.wi)
+                                  : material_->emitted(light_hit(seen.point, seen.normal), -seen.wi);
+    return light_sample(seen, radiance);
 }
 
 double AreaLight::pdf(const Hit& at, const Vec3& wi, const Hit* on_light) const {
