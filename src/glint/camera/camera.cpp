@@ -74,24 +74,4 @@ ViewParams read_view_params(Params& params, FilmSize film) {
     return view;
 }
 
-Vec3 view_plane_direction(const ViewParams& view, FilmSize size, Point2 film) {
-    const double x = view.pixel_size * (film.x - 0.5 * size.width);
-    const double y = view.pixel_size * (0.5 * size.height - film.y);
-    const CameraBasis& b = view.basis;
-    return x * b.u + y * b.v - view.view_distance * b.w;
-}
-
-Ray ray_from_near_surface(const ViewParams& view, const Vec3& origin, const Vec3& direction, double forward) {
-    const Vec3 unit = normalize(direction);
-    if (view.near == 0) {
-        return {origin, unit};  // no near surface: today's rays, unchanged
-    }
-    if (view.near_shape == NearShape::Sphere) {
-        return {origin + view.near * unit, unit};
-    }
-    // `direction` advances `forward` along the view per unit of t: scaling it by near / forward reaches
-    // the plane exactly, without the rounding of a cosine taken from the normalised direction.
-    return {origin + direction * (view.near / forward), unit};
-}
-
 }  // namespace glint

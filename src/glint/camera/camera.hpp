@@ -91,11 +91,30 @@ struct ViewParams {
 ViewParams read_view_params(Params& params, FilmSize film);
 // The (not normalised) direction from the eye through the view-plane point of `film`: its component
 // along −w is the view distance d, across it the film offset from the image centre in view-plane units.
-Vec3 view_plane_direction(const ViewParams& view, FilmSize size, Point2 film);
+// Inline, as ray_from_near_surface: both are on every camera ray's path (the two calls were 0.9 % of
+// the instructions of RTIOW's final scene).
+inline Vec3 view_plane_direction(const ViewParams& view, FilmSize size, Point2 film) {
+    const double x = view.pixel_size * (film.x - 0.5 * size.width);
+    const double y = view.pixel_size * (0.5 * size.height - film.y);
+    const CameraBasis& b = view.basis;
+    return x * b.u + y * b.v - view.view_distance * b.w;
+}
 // The primary ray from `origin` (a point of the plane through the eye across w: the eye or a lens point)
 // along `direction`, whose component along the view direction −w is `forward` (> 0), started where it
 // crosses the view's near surface, so that nothing nearer is seen. The returned direction is unit; with
 // near = 0 the ray is {origin, normalize(direction)}, bit for bit.
-Ray ray_from_near_surface(const ViewParams& view, const Vec3& origin, const Vec3& direction, double forward);
+inline Ray ray_from_near_surface(const ViewParams& view, const Vec3& origin, const Vec3& direction,
+                                 double forward) {
+    const Vec3 unit = normalize(direction);
+    if (view.near == 0) {
+        return {origin, unit};  // no near surface: today's rays, unchanged
+    }
+    if (view.near_shape == NearShape::Sphere) {
+        return {origin + view.near * unit, unit};
+    }
+    // `direction` advances `forward` along the view per unit of t: scaling it by near / forward reaches
+    // the plane exactly, without the rounding of a cosine taken from the normalised direction.
+    return {origin + direction * (view.near / forward), unit};
+}
 
 }  // namespace glint
