@@ -314,6 +314,13 @@ __attribute__((target("avx2"))) inline void test_group(const ShapeList& list, st
 }
 #endif
 
+// f(std::true_type{}) for a list of spheres only, else f(std::false_type{}): the choice made once a
+// ray, for test_group's kSpheresOnly.
+template <class ShapeList, class F>
+inline bool with_spheres_only(const ShapeList& list, F&& f) {
+    return list.spheres_only ? f(std::true_type{}) : f(std::false_type{});
+}
+
 }  // namespace
 
 BvhAccelerator::BvhAccelerator(std::span<const Shape* const> shapes, std::size_t flat_max_shapes) {
@@ -357,9 +364,8 @@ BvhAccelerator::BvhAccelerator(std::span<const Shape* const> shapes, std::size_t
 Vec3 BvhAccelerator::culling_inverse(const Ray& ray) const {
     // Three divisions a ray, spent only when the flat list has shapes other than spheres (smallpt's
     // nine spheres never read it).
-    return direct_.size() > direct_.sphere_count
-               ? Vec3{1 / ray.direction.x, 1 / ray.direction.y, 1 / ray.direction.z}
-               : Vec3{};
+    return direct_.spheres_only ? Vec3{}
+                                : Vec3{1 / ray.direction.x, 1 / ray.direction.y, 1 / ray.direction.z};
 }
 
 template <bool kFourSpheres>
@@ -455,11 +461,10 @@ bool BvhAccelerator::intersect_with(const Ray& ray, double t_max, Hit& hit) cons
         }
         return found;
     };
-    const auto direct_size = static_cast<std::uint32_t>(direct_.size());
-    bool found = direct_.spheres_only ? test_range(direct_, 0, direct_size, t_max,
-                                                   std::bool_constant<kFourSpheres>{}, std::true_type{})
-                                      : test_range(direct_, 0, direct_size, t_max,
-                                                   std::bool_constant<kFourSpheres>{}, std::false_type{});
+    bool found = with_spheres_only(direct_, [&](auto spheres_only) {
+        return test_range(direct_, 0, static_cast<std::uint32_t>(direct_.size()), t_max,
+                          std::bool_constant<kFourSpheres>{}, spheres_only);
+    });
     if (leaves_.size() > 0) {
         found |=
             bvh_.intersect(ray, t_max, [&](std::uint32_t first, std::uint32_t count, double& t_limit, auto) {
@@ -519,11 +524,12 @@ bool BvhAccelerator::occluded_with(const Ray& ray, double t_max) const {
         }
         return false;
     };
-    const auto direct_size = static_cast<std::uint32_t>(direct_.size());
-    return (direct_.spheres_only ? range_occludes(direct_, 0, direct_size, t_max,
-                                                  std::bool_constant<kFourSpheres>{}, std::true_type{})
-                                 : range_occludes(direct_, 0, direct_size, t_max,
-                                                  std::bool_constant<kFourSpheres>{}, std::false_type{})) ||
+    return with_spheres_only(direct_,
+                             [&](auto spheres_only) {
+                                 return range_occludes(direct_, 0, static_cast<std::uint32_t>(direct_.size()),
+                                                       t_max, std::bool_constant<kFourSpheres>{},
+                                                       spheres_only);
+                             }) ||
            (leaves_.size() > 0 &&
             bvh_.occluded(ray, t_max,
                           [&](std::uint32_t first, std::uint32_t count, double t_limit, auto /*avx2*/) {

@@ -83,19 +83,23 @@ std::optional<SeenSample> Sphere::sample_seen_from(const Vec3& ref, Point2 u) co
     return SeenSample{point, normal, to_point / distance, 1 / (2 * kPi * omc_max)};
 }
 
+double Sphere::cone_pdf(const Vec3& ref) const {
+    return 1 / (2 * kPi * one_minus_cos_max(sqr(radius_) / length_squared(center_ - ref)));
+}
+
 double Sphere::pdf_seen_from(const Vec3& ref, const Vec3& wi, const Hit& on_shape) const {
-    return pdf_seen_from(ref, wi, on_shape.point, on_shape.normal);
+    return seen_from_outside(ref) ? cone_pdf(ref) : Shape::pdf_seen_from(ref, wi, on_shape);
 }
 
 double Sphere::pdf_seen_from(const Vec3& ref, const Vec3& wi, const Vec3& point, const Vec3& normal) const {
-    if (!seen_from_outside(ref)) {
-        Hit on_shape;
-        on_shape.point = point;
-        on_shape.normal = normal;
-        on_shape.shading_normal = normal;
-        return Shape::pdf_seen_from(ref, wi, on_shape);
+    if (seen_from_outside(ref)) {
+        return cone_pdf(ref);
     }
-    return 1 / (2 * kPi * one_minus_cos_max(sqr(radius_) / length_squared(center_ - ref)));
+    Hit on_shape;  // what Shape::pdf_seen_from reads of it
+    on_shape.point = point;
+    on_shape.normal = normal;
+    on_shape.shading_normal = normal;
+    return Shape::pdf_seen_from(ref, wi, on_shape);
 }
 
 std::unique_ptr<Shape> Sphere::create(Params& params, const BuildContext&) {

@@ -81,6 +81,8 @@ class Sphere final : public Shape {
   private:
     // Whether `ref` is outside, where the cone sampling applies.
     bool seen_from_outside(const Vec3& ref) const;
+    // The cone sampling's density (per steradian) from `ref` outside.
+    double cone_pdf(const Vec3& ref) const;
 
     Vec3 center_;
     double radius_;

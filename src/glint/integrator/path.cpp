@@ -53,7 +53,7 @@ Rgb PathIntegrator::radiance(const World& world, const Ray& camera_ray, SampleSt
     bool specular = true;  // the last bounce was a delta lobe (or the camera): emission counts in full
     double bsdf_pdf = 0;   // solid-angle density of the last BSDF sample
     // This bounce's hit and the last vertex (facing the way the path came): two records that trade
-    // places each bounce, since copying a 128-byte Hit, and a facing copy of it, cost ~45 instructions
+    // places each bounce, since copying a 112-byte Hit, and a facing copy of it, cost ~45 instructions
     // a vertex (2 % of the Cornell box).
     Hit records[2];
     Hit* last = &records[0];

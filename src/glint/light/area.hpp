@@ -39,10 +39,12 @@ class AreaLight final : public Light {
     const Shape* shape_;
     const Material* material_;
     int samples_;
-    // The shape and the material again when they are a Rectangle and an AreaEmitter (else nullptr):
-    // a quad light, as most scenes' (the Cornell boxes'), is then sampled with no virtual call and no
-    // hit record, the same arithmetic inline (issue 13: it was 7 % of the Cornell box's instructions).
+    // The shape again when it is a Rectangle (else nullptr): a quad light with an AreaEmitter, as most
+    // scenes' (the Cornell boxes'), is then sampled with no virtual call and no hit record, the same
+    // arithmetic inline (issue 13: it was 7 % of the Cornell box's instructions).
     const Rectangle* rectangle_;
+    // The material again when it is an AreaEmitter (else nullptr), whatever the shape: its radiance
+    // needs only the normal, so sample_of builds no hit record for it (smallpt's sphere).
     const AreaEmitter* emitter_;
 };
 

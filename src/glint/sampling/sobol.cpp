@@ -70,8 +70,11 @@ Point2 SobolSampler::sample_2d(const SampleHashes& key, std::uint32_t dimension)
 }
 
 FilmAndLens SobolSampler::sample_film_and_lens(const SampleHashes& key) const {
+    static_assert(kFilmDimension < kStratifiedDimensions && kLensDimension < kStratifiedDimensions);
     const ReversedPoint film = reversed_point(key, kFilmDimension);
-    // film.x is the film's scrambled index (dimension 0 reversed is the index itself).
+    // film.x is the film's scrambled index (dimension 0 reversed is the index itself); the lens's seeds
+    // are reversed_point's for its dimension (SamplePatterns.FilmAndLensInOneCallAreTheirDimensionsPoints
+    // checks that the two ways agree).
     return {scrambled_point(film),
             scrambled_point(lens_point(film.x, mix64(key.pixel_bits(kLensDimension))))};
 }
