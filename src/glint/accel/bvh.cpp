@@ -16,7 +16,6 @@ void BvhAccelerator::ShapeList::add(const Shape* shape, std::uint32_t index) {
     spheres.insert(spheres.end() - kSpherePadding,
                    sphere != nullptr ? LeafSphere{sphere->center(), sphere->radius()} : LeafSphere{});
     sphere_count += sphere != nullptr ? 1 : 0;
-    spheres_only = spheres_only && sphere != nullptr;
     if (with_rectangles) {
         const std::size_t i = shapes.size();
         if (i % 4 == 0) {
@@ -275,7 +274,7 @@ __attribute__((target("avx2"))) inline unsigned culling_box_lanes(const Block& b
 // the end are dropped. In a list with rectangles (whose groups start at multiples of four), rectangle
 // lanes are tested too and reported with the spheres', and other lanes only when the ray may meet their
 // culling box (the list's own shapes' tests then skip that box). Fills `lanes` in place.
-// kSpheresOnly: the list holds only spheres (ShapeList::spheres_only), decided once a ray rather than
+// kSpheresOnly: the list holds only spheres (ShapeList::spheres_only()), decided once a ray rather than
 // once a group (reading the flag in here cost the Cornell box 0.5 % of its instructions; the choice
 // once a ray costs it 0.3 %).
 template <bool kSpheresOnly, class ShapeList>
@@ -318,7 +317,7 @@ __attribute__((target("avx2"))) inline void test_group(const ShapeList& list, st
 // ray, for test_group's kSpheresOnly.
 template <class ShapeList, class F>
 inline bool with_spheres_only(const ShapeList& list, F&& f) {
-    return list.spheres_only ? f(std::true_type{}) : f(std::false_type{});
+    return list.spheres_only() ? f(std::true_type{}) : f(std::false_type{});
 }
 
 }  // namespace
@@ -364,8 +363,8 @@ BvhAccelerator::BvhAccelerator(std::span<const Shape* const> shapes, std::size_t
 Vec3 BvhAccelerator::culling_inverse(const Ray& ray) const {
     // Three divisions a ray, spent only when the flat list has shapes other than spheres (smallpt's
     // nine spheres never read it).
-    return direct_.spheres_only ? Vec3{}
-                                : Vec3{1 / ray.direction.x, 1 / ray.direction.y, 1 / ray.direction.z};
+    return direct_.spheres_only() ? Vec3{}
+                                  : Vec3{1 / ray.direction.x, 1 / ray.direction.y, 1 / ray.direction.z};
 }
 
 template <bool kFourSpheres>

@@ -72,10 +72,10 @@ class BvhAccelerator final : public Accelerator {
         // The flat list tests four at a time only when it has a few spheres and rectangles.
         std::size_t sphere_count = 0;
         std::size_t rectangle_count = 0;
-        // Every shape a sphere: four at a time needs no block (kept by add(); read for the flat list only).
-        bool spheres_only = true;
         void add(const Shape* shape, std::uint32_t index);
         std::size_t size() const { return shapes.size(); }
+        // Every shape a sphere: four at a time needs no block (read for the flat list only).
+        bool spheres_only() const { return sphere_count == size(); }
     };
 
     // The body of intersect and occluded, with the spheres (and rectangles) of the flat list tested one at a
