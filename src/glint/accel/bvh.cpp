@@ -130,7 +130,8 @@ __attribute__((target("avx2"))) inline __m256d dot3(__m256d px, __m256d py, __m2
 // Fills `lanes` in place (sphere, hit and other; t unless every sphere lane misses): returned by value,
 // the 224-byte record was copied twice a group (2.5 % of smallpt's instructions).
 __attribute__((target("avx2"))) inline void test_sphere_lanes(const double* records, const Ray& ray,
-                                                              double t_limit, SphereLanes& lanes) {
+                                                              double inverse_a, double t_limit,
+                                                              SphereLanes& lanes) {
     // Four records (cx, cy, cz, r) in rows; transposed into one register per field.
     const __m256d r0 = _mm256_loadu_pd(records);
     const __m256d r1 = _mm256_loadu_pd(records + 4);
@@ -156,7 +157,7 @@ __attribute__((target("avx2"))) inline void test_sphere_lanes(const double* reco
     const __m256d h = dot3(dx, dy, dz, ocx, ocy, ocz);
     const __m256d radius2 = mul(radius, radius);
     const __m256d c = sub(dot3(ocx, ocy, ocz, ocx, ocy, ocz), radius2);
-    const __m256d h_over_a = _mm256_div_pd(h, a);
+    const __m256d h_over_a = mul(h, _mm256_set1_pd(inverse_a));
     const __m256d lx = sub(ocx, mul(dx, h_over_a));
     const __m256d ly = sub(ocy, mul(dy, h_over_a));
     const __m256d lz = sub(ocz, mul(dz, h_over_a));
@@ -176,7 +177,7 @@ __attribute__((target("avx2"))) inline void test_sphere_lanes(const double* reco
     const __m256d root =
         _mm256_or_pd(_mm256_andnot_pd(sign_bit, _mm256_sqrt_pd(discriminant)), _mm256_and_pd(sign_bit, h));
     const __m256d q = _mm256_xor_pd(add(h, root), sign_bit);
-    const __m256d near_root = _mm256_div_pd(q, a);
+    const __m256d near_root = mul(q, _mm256_set1_pd(inverse_a));
     const __m256d far_root = _mm256_div_pd(c, q);
     const __m256d swapped = _mm256_cmp_pd(near_root, far_root, _CMP_GT_OQ);  // if (t0 > t1) swap
     const __m256d t0 = _mm256_blendv_pd(near_root, far_root, swapped);
@@ -280,19 +281,21 @@ __attribute__((target("avx2"))) inline unsigned culling_box_lanes(const Block& b
 template <bool kSpheresOnly, class ShapeList>
 __attribute__((target("avx2"))) inline void test_group(const ShapeList& list, std::uint32_t i,
                                                        std::uint32_t end, const Ray& ray,
-                                                       const Vec3& inv_direction, double t_limit,
-                                                       SphereLanes& lanes) {
+                                                       const Vec3& inv_direction, double inverse_a,
+                                                       double t_limit, SphereLanes& lanes) {
     const unsigned in_range = (1u << std::min<std::uint32_t>(end - i, 4)) - 1;
     if (kSpheresOnly || !list.with_rectangles) {
         // No block to read for a list of spheres (smallpt's room: 5 % of its instructions).
-        test_sphere_lanes(reinterpret_cast<const double*>(list.spheres.data() + i), ray, t_limit, lanes);
+        test_sphere_lanes(reinterpret_cast<const double*>(list.spheres.data() + i), ray, inverse_a, t_limit,
+                          lanes);
         lanes.hit &= in_range;
         lanes.other = ~lanes.sphere & in_range;
         return;
     }
     const auto& block = list.rectangles[i / 4];
     if ((block.spheres & in_range) != 0) {
-        test_sphere_lanes(reinterpret_cast<const double*>(list.spheres.data() + i), ray, t_limit, lanes);
+        test_sphere_lanes(reinterpret_cast<const double*>(list.spheres.data() + i), ray, inverse_a, t_limit,
+                          lanes);
     } else {
         // t's of 0 in lanes that are not hit; the rectangles' points are left unset, not zeroed (that
         // alone cost more than solving the nearest rectangle again).
@@ -391,6 +394,7 @@ bool BvhAccelerator::intersect_with(const Ray& ray, double t_max, Hit& hit) cons
         }
     };
     const Vec3 inv_direction = culling_inverse(ray);
+    const double inverse_a = inverse_length_squared(ray.direction);  // for every sphere test of the ray
     // box_tested: test_group has tested the culling box already.
     const auto test_other = [&](const ShapeList& list, std::uint32_t i, double& t_limit, bool box_tested) {
         if (!box_tested && !list.culling_boxes.empty() &&
@@ -418,7 +422,8 @@ bool BvhAccelerator::intersect_with(const Ray& ray, double t_max, Hit& hit) cons
             const std::uint32_t end = first + count;
             SphereLanes lanes;
             for (std::uint32_t i = first; i < end; i += 4) {
-                test_group<decltype(spheres_only)::value>(list, i, end, ray, inv_direction, t_limit, lanes);
+                test_group<decltype(spheres_only)::value>(list, i, end, ray, inv_direction, inverse_a,
+                                                          t_limit, lanes);
                 // The lanes' t's were found against the t_limit of the group's start; walking them in
                 // order against the t_limit of the moment gives what the one-at-a-time loop gives.
                 // (Boxes are culled against that t_limit too: a box culled against it is culled against
@@ -450,7 +455,7 @@ bool BvhAccelerator::intersect_with(const Ray& ray, double t_max, Hit& hit) cons
             const LeafSphere& sphere = list.spheres[i];
             if (sphere.radius > 0) {
                 double t = 0;
-                if (sphere_hit_t(sphere.center, sphere.radius, ray, t_limit, t)) {
+                if (sphere_hit_t(sphere.center, sphere.radius, ray, inverse_a, t_limit, t)) {
                     take_sphere(list, i, t, t_limit);
                     found = true;
                 }
@@ -488,6 +493,7 @@ bool BvhAccelerator::intersect_with(const Ray& ray, double t_max, Hit& hit) cons
 template <bool kFourSpheres>
 bool BvhAccelerator::occluded_with(const Ray& ray, double t_max) const {
     const Vec3 inv_direction = culling_inverse(ray);
+    const double inverse_a = inverse_length_squared(ray.direction);
     const auto other_occludes = [&](const ShapeList& list, std::uint32_t i, double t_limit, bool box_tested) {
         return (box_tested || list.culling_boxes.empty() ||
                 ray_may_meet(list.culling_boxes[i], ray, inv_direction, t_limit)) &&
@@ -500,7 +506,8 @@ bool BvhAccelerator::occluded_with(const Ray& ray, double t_max) const {
             const std::uint32_t end = first + count;
             SphereLanes lanes;
             for (std::uint32_t i = first; i < end; i += 4) {
-                test_group<decltype(spheres_only)::value>(list, i, end, ray, inv_direction, t_limit, lanes);
+                test_group<decltype(spheres_only)::value>(list, i, end, ray, inv_direction, inverse_a,
+                                                          t_limit, lanes);
                 if (lanes.hit != 0) {
                     return true;
                 }
@@ -516,7 +523,7 @@ bool BvhAccelerator::occluded_with(const Ray& ray, double t_max) const {
 #endif
         for (std::uint32_t i = first; i < first + count; ++i) {
             const LeafSphere& sphere = list.spheres[i];
-            if (sphere.radius > 0 ? sphere_occludes(sphere.center, sphere.radius, ray, t_limit)
+            if (sphere.radius > 0 ? sphere_occludes(sphere.center, sphere.radius, ray, inverse_a, t_limit)
                                   : other_occludes(list, i, t_limit, false)) {
                 return true;
             }

@@ -14,7 +14,7 @@ Bounds3 Sphere::bounds() const {
 
 bool Sphere::intersect(const Ray& ray, double t_max, Hit& hit) const {
     double t = 0;
-    if (!sphere_hit_t(center_, radius_, ray, t_max, t)) {
+    if (!sphere_hit_t(center_, radius_, ray, inverse_length_squared(ray.direction), t_max, t)) {
         return false;
     }
     fill_hit(ray, t, hit);
@@ -34,7 +34,7 @@ void Sphere::fill_hit(const Ray& ray, double t, Hit& hit) const {
 }
 
 bool Sphere::occluded(const Ray& ray, double t_max) const {
-    return sphere_occludes(center_, radius_, ray, t_max);
+    return sphere_occludes(center_, radius_, ray, inverse_length_squared(ray.direction), t_max);
 }
 
 std::optional<ShapeSample> Sphere::sample_area(Point2 u) const {
