@@ -87,10 +87,15 @@ class BvhAccelerator final : public Accelerator {
     bool occluded_with(const Ray& ray, double t_max) const;
     // The ray's reciprocal direction for the flat list's box tests (zero when the list has none).
     Vec3 culling_inverse(const Ray& ray) const;
+    // Every ray's entry when the CPU has AVX2, the flat list four at a time or not: compiled for AVX2 and
+    // FMA (the tree's traversal's target) with everything they call inlined, so that one function holds
+    // the flat list, the traversal and the leaf tests (bvh.cpp gives the figures).
+    template <bool kFourSpheres>
     bool intersect_avx2(const Ray& ray, double t_max, Hit& hit) const;
+    template <bool kFourSpheres>
     bool occluded_avx2(const Ray& ray, double t_max) const;
-    // intersect_with<false> and occluded_with<false>, kept out of line: inlined into intersect(), their
-    // set-up was paid by every ray of the AVX2 path too (the Cornell box's, 15 instructions a ray).
+    // intersect_with<false> and occluded_with<false> without AVX2 (the CPU lacks it, or a test forced the
+    // scalar traversal), kept out of line so that intersect() stays a small dispatch.
     bool intersect_one_at_a_time(const Ray& ray, double t_max, Hit& hit) const;
     bool occluded_one_at_a_time(const Ray& ray, double t_max) const;
 
