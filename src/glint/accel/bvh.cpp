@@ -95,8 +95,8 @@ constexpr std::uint32_t kFewestSpheresForFour = 3;
 #ifdef GLINT_BVH_HAVE_AVX2_PATH
 // Four consecutive sphere records tested against a ray at once: sphere_hit_t (geometry/sphere.hpp) in
 // each lane, operation for operation in the same order (no FMA: the build has -ffp-contract=off and
-// this file uses no FMA intrinsic; sqrt and division are correctly rounded in both), so each lane's t
-// is the very double the scalar function computes.
+// no FMA intrinsic is used outside the wide BVH's node test; sqrt and division are correctly rounded in
+// both), so each lane's t is the very double the scalar function computes.
 struct SphereLanes {
     alignas(32) double t[4];
     // A rectangle lane's hit point and (a, b), as Rectangle::solve finds them: read only for rectangle
@@ -371,9 +371,12 @@ Vec3 BvhAccelerator::culling_inverse(const Ray& ray) const {
 }
 
 // nearest_rectangle_point and _ab are read only when nearest_is_rectangle, which is set only where they
-// are written; inlined into intersect_avx2, GCC cannot see that and warns.
+// are written; inlined into intersect_avx2, GCC cannot see that and warns. (Clang does not warn, and
+// would reject the unknown warning group.)
+#if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
 template <bool kFourSpheres>
 bool BvhAccelerator::intersect_with(const Ray& ray, double t_max, Hit& hit) const {
     // The nearest sphere so far (entry `nearest_sphere` of `nearest_list`), if it is nearer than every
@@ -494,7 +497,9 @@ bool BvhAccelerator::intersect_with(const Ray& ray, double t_max, Hit& hit) cons
     return found;
 }
 
+#if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic pop
+#endif
 
 template <bool kFourSpheres>
 bool BvhAccelerator::occluded_with(const Ray& ray, double t_max) const {

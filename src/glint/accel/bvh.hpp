@@ -79,8 +79,10 @@ class BvhAccelerator final : public Accelerator {
     };
 
     // The body of intersect and occluded, with the spheres (and rectangles) of the flat list tested one at a
-    // time or four at a time with AVX2 (the *_avx2 functions, compiled for AVX2, are called only when the CPU
-    // has it). Both give the same bits. Tree leaves are tested one at a time either way (bvh.cpp says why).
+    // time (kFourSpheres false) or four at a time with AVX2 (true). Both are reached through intersect_avx2
+    // and occluded_avx2 when the CPU has AVX2 and FMA; intersect_with<false> also through the
+    // *_one_at_a_time functions without. Both give the same bits. Tree leaves are tested one at a time
+    // either way (bvh.cpp says why).
     template <bool kFourSpheres>
     bool intersect_with(const Ray& ray, double t_max, Hit& hit) const;
     template <bool kFourSpheres>
@@ -88,8 +90,9 @@ class BvhAccelerator final : public Accelerator {
     // The ray's reciprocal direction for the flat list's box tests (zero when the list has none).
     Vec3 culling_inverse(const Ray& ray) const;
     // Every ray's entry when the CPU has AVX2, the flat list four at a time or not: compiled for AVX2 and
-    // FMA (the tree's traversal's target) with everything they call inlined, so that one function holds
-    // the flat list, the traversal and the leaf tests (bvh.cpp gives the figures).
+    // FMA (the tree's traversal's target) and flattened, so that one function holds the flat list, the
+    // traversal and the leaf tests; the shapes' own (virtual) tests and the filling of the nearest hit
+    // stay calls (bvh.cpp gives the figures).
     template <bool kFourSpheres>
     bool intersect_avx2(const Ray& ray, double t_max, Hit& hit) const;
     template <bool kFourSpheres>

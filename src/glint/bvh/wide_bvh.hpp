@@ -159,7 +159,6 @@ class WideBvh {
     template <bool kAnyHit, class NodeTest, class Leaf>
     bool traverse(const Ray& ray, double& t_max, Leaf& leaf) const;
 #ifdef GLINT_BVH_HAVE_AVX2_PATH
-    // The same loop compiled for AVX2, so that the node test and the owner's leaf test are inlined.
     // Every leaf in turn, for rays the box tests cannot take (beyond_float_traversal).
     template <bool kAnyHit, class Leaf>
     bool every_leaf(double& t_max, Leaf& leaf) const {
@@ -176,6 +175,7 @@ class WideBvh {
         }
         return found;
     }
+    // The same loop compiled for AVX2, so that the node test and the owner's leaf test are inlined.
     template <bool kAnyHit, class Leaf>
     bool traverse_avx2(const Ray& ray, double& t_max, Leaf& leaf) const;
 #endif
