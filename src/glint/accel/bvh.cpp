@@ -157,7 +157,8 @@ __attribute__((target("avx2"))) inline void test_sphere_lanes(const double* reco
     const __m256d h = dot3(dx, dy, dz, ocx, ocy, ocz);
     const __m256d radius2 = mul(radius, radius);
     const __m256d c = sub(dot3(ocx, ocy, ocz, ocx, ocy, ocz), radius2);
-    const __m256d h_over_a = mul(h, _mm256_set1_pd(inverse_a));
+    const __m256d inverse_a_lanes = _mm256_set1_pd(inverse_a);
+    const __m256d h_over_a = mul(h, inverse_a_lanes);
     const __m256d lx = sub(ocx, mul(dx, h_over_a));
     const __m256d ly = sub(ocy, mul(dy, h_over_a));
     const __m256d lz = sub(ocz, mul(dz, h_over_a));
@@ -177,7 +178,7 @@ __attribute__((target("avx2"))) inline void test_sphere_lanes(const double* reco
     const __m256d root =
         _mm256_or_pd(_mm256_andnot_pd(sign_bit, _mm256_sqrt_pd(discriminant)), _mm256_and_pd(sign_bit, h));
     const __m256d q = _mm256_xor_pd(add(h, root), sign_bit);
-    const __m256d near_root = mul(q, _mm256_set1_pd(inverse_a));
+    const __m256d near_root = mul(q, inverse_a_lanes);
     const __m256d far_root = _mm256_div_pd(c, q);
     const __m256d swapped = _mm256_cmp_pd(near_root, far_root, _CMP_GT_OQ);  // if (t0 > t1) swap
     const __m256d t0 = _mm256_blendv_pd(near_root, far_root, swapped);
@@ -321,6 +322,13 @@ __attribute__((target("avx2"))) inline void test_group(const ShapeList& list, st
 template <class ShapeList, class F>
 inline bool with_spheres_only(const ShapeList& list, F&& f) {
     return list.spheres_only() ? f(std::true_type{}) : f(std::false_type{});
+}
+
+// Whether the flat list is tested four at a time (with AVX2): from kFewestSpheresForFour spheres and
+// rectangles.
+template <class ShapeList>
+inline bool flat_list_four_at_a_time(const ShapeList& list) {
+    return list.sphere_count + list.rectangle_count >= kFewestSpheresForFour;
 }
 
 }  // namespace
@@ -579,9 +587,8 @@ __attribute__((target("avx2,fma"), flatten)) bool BvhAccelerator::occluded_avx2(
 bool BvhAccelerator::intersect(const Ray& ray, double t_max, Hit& hit) const {
 #ifdef GLINT_BVH_HAVE_AVX2_PATH
     if (WideBvh::uses_avx2()) {
-        return direct_.sphere_count + direct_.rectangle_count >= kFewestSpheresForFour
-                   ? intersect_avx2<true>(ray, t_max, hit)
-                   : intersect_avx2<false>(ray, t_max, hit);
+        return flat_list_four_at_a_time(direct_) ? intersect_avx2<true>(ray, t_max, hit)
+                                                 : intersect_avx2<false>(ray, t_max, hit);
     }
 #endif
     return intersect_one_at_a_time(ray, t_max, hit);
@@ -595,9 +602,8 @@ __attribute__((noinline)) bool BvhAccelerator::intersect_one_at_a_time(const Ray
 bool BvhAccelerator::occluded(const Ray& ray, double t_max) const {
 #ifdef GLINT_BVH_HAVE_AVX2_PATH
     if (WideBvh::uses_avx2()) {
-        return direct_.sphere_count + direct_.rectangle_count >= kFewestSpheresForFour
-                   ? occluded_avx2<true>(ray, t_max)
-                   : occluded_avx2<false>(ray, t_max);
+        return flat_list_four_at_a_time(direct_) ? occluded_avx2<true>(ray, t_max)
+                                                 : occluded_avx2<false>(ray, t_max);
     }
 #endif
     return occluded_one_at_a_time(ray, t_max);

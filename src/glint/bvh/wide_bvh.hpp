@@ -152,6 +152,15 @@ class WideBvh {
             __builtin_prefetch(p + offset);
         }
     }
+    // Starts loading a child that traversal has put aside (a node, or a leaf's data when the owner gave
+    // it): it will be read soon, and traversal otherwise spends much of its time waiting for memory.
+    void prefetch_child(std::uint32_t child, std::uint32_t count) const {
+        if (count == 0) {
+            prefetch(&nodes_[child], sizeof(WideBvhNode));
+        } else if (leaf_data_ != nullptr) {
+            prefetch(leaf_data_ + std::size_t{child} * leaf_stride_, leaf_stride_);
+        }
+    }
     // uses_avx2()'s answer, asked twice for every ray: the CPU's, found once when the program starts
     // (before main; nothing traverses a tree during static initialisation), unless a test forced the
     // scalar path.
@@ -361,11 +370,7 @@ __attribute__((always_inline)) inline bool WideBvh::traverse(const Ray& ray, dou
                 const bool k_first = kAnyHit || !(t_near[i] < t_near[k]);
                 const int later = k_first ? i : k;
                 const int now = k_first ? k : i;
-                if (node.count[later] == 0) {
-                    prefetch(&nodes_[node.child[later]], sizeof(WideBvhNode));
-                } else if (leaf_data_ != nullptr) {
-                    prefetch(leaf_data_ + std::size_t{node.child[later]} * leaf_stride_, leaf_stride_);
-                }
+                prefetch_child(node.child[later], node.count[later]);
                 stack[top++] = {node.child[later], node.count[later], t_near[later]};
                 entry = {node.child[now], node.count[now], t_near[now]};
                 continue;
@@ -379,14 +384,9 @@ __attribute__((always_inline)) inline bool WideBvh::traverse(const Ray& ray, dou
                 const int i = __builtin_ctz(mask);
                 mask &= mask - 1;
                 const StackEntry e{node.child[i], node.count[i], t_near[i]};
-                // The child will be read soon (at once, if it is the next one popped: the nearest for a
-                // nearest hit, the last pushed for any hit): start loading it, since
-                // traversal otherwise spends much of its time waiting for nodes and leaves to arrive.
-                if (e.count == 0) {
-                    prefetch(&nodes_[e.child], sizeof(WideBvhNode));
-                } else if (leaf_data_ != nullptr) {
-                    prefetch(leaf_data_ + std::size_t{e.child} * leaf_stride_, leaf_stride_);
-                }
+                // Read soon: at once, if it is the next one popped (the nearest for a nearest hit, the
+                // last pushed for any hit).
+                prefetch_child(e.child, e.count);
                 int j = top++;
                 while (!kAnyHit && j > base && stack[j - 1].t_near < e.t_near) {
                     stack[j] = stack[j - 1];
