@@ -41,10 +41,10 @@ PreparedRender prepare_render(const RenderOptions& options, bool print_warnings)
     // the file; the --set edits follow them, in order.
     apply_flags_and_sets(desc, options.flags, options.sets);
     PreparedRender prepared;
-    prepared.scene_hash = fnv1a(std::string("glint ") + GLINT_VERSION + "\n" + write_scene_yaml(desc.root));
     const Node* camera = desc.root.find("camera");
     prepared.camera_yaml = camera ? write_scene_yaml(*camera) : "{} (the default camera)";
     prepared.scene = build_scene(desc);
+    prepared.scene_tree = std::move(desc.root);
     if (print_warnings) {
         for (const std::string& warning : scene_warnings(prepared.scene)) {
             std::cerr << "glint: warning: " << warning << '\n';
@@ -54,6 +54,10 @@ PreparedRender prepare_render(const RenderOptions& options, bool print_warnings)
         prepared.scene.view.settings.threads = *options.threads;
     }
     return prepared;
+}
+
+std::uint64_t PreparedRender::scene_hash() const {
+    return fnv1a(std::string("glint ") + GLINT_VERSION + "\n" + write_scene_yaml(scene_tree));
 }
 
 Image film_window(const Film& film, const PixelWindow& window) {
