@@ -78,6 +78,28 @@ TEST(YamlLoader, ColumnsCountBytesAfterNonAsciiCharacters) {
     EXPECT_EQ(object.find("radious")->pos.column, column_of(text, 3, "1}"));
 }
 
+TEST(YamlLoader, EveryLineOfNonAsciiTextCountsItsOwnBytes) {
+    // The loader finds each line's first byte once and measures the line's marks from it: marks on the
+    // same line after several characters of two and three bytes, then lines whose characters differ.
+    const std::string text =
+        "a: [\"\xE2\x80\x94\xE2\x80\x94\", 1, \"\xC3\xA9\", 2]\n"
+        "b: {x: \"\xC3\xA9\xC3\xA9\xC3\xA9\", y: 3, z: 4}\n"
+        "c: [5, \"\xE2\x80\x94\", 6]\n";
+    const SceneDesc desc = parse_scene_text(text, "x.yaml", ".");
+    const Node& a = *desc.root.find("a");
+    EXPECT_EQ(a.items[1].pos.column, column_of(text, 1, "1,"));
+    EXPECT_EQ(a.items[3].pos.column, column_of(text, 1, "2]"));
+    const Node& b = *desc.root.find("b");
+    EXPECT_EQ(b.key_positions[1].line, 2);
+    EXPECT_EQ(b.key_positions[1].column, column_of(text, 2, "y:"));
+    EXPECT_EQ(b.key_positions[2].column, column_of(text, 2, "z:"));
+    EXPECT_EQ(b.find("z")->pos.column, column_of(text, 2, "4}"));
+    const Node& c = *desc.root.find("c");
+    EXPECT_EQ(c.items[0].pos.line, 3);
+    EXPECT_EQ(c.items[0].pos.column, column_of(text, 3, "5,"));
+    EXPECT_EQ(c.items[2].pos.column, column_of(text, 3, "6]"));
+}
+
 TEST(YamlLoader, AByteOrderMarkIsPartOfTheFirstLinesColumns) {
     const std::string text =
         "\xEF\xBB\xBF"
