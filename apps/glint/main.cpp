@@ -227,7 +227,7 @@ int run_render(const RenderOptions& options) {
     install_stop_handlers();
     glint::cli::PreparedRender prepared;
     try {
-        prepared = glint::cli::prepare_render(options, true);
+        prepared = glint::cli::prepare_render(options, true, glint::cli::needs_scene_hash(options));
     } catch (const glint::SceneError& e) {
         std::cerr << e.what() << '\n';
         return kExitBadInput;
@@ -257,7 +257,7 @@ int run_render(const RenderOptions& options) {
     if (!options.resume.empty()) {
         std::optional<glint::Checkpoint> checkpoint;
         if (const int refused =
-                read_resume_checkpoint(options.resume, prepared.scene_hash(), scene.view, checkpoint);
+                read_resume_checkpoint(options.resume, prepared.scene_hash, scene.view, checkpoint);
             refused != 0) {
             return refused;
         }
@@ -276,7 +276,7 @@ int run_render(const RenderOptions& options) {
             const auto now = std::chrono::steady_clock::now();
             if (samples_done < samples_asked &&
                 std::chrono::duration<double>(now - last_checkpoint).count() >= options.checkpoint_every) {
-                write_checkpoint(options.checkpoint, prepared.scene_hash(), samples_done, samples_asked,
+                write_checkpoint(options.checkpoint, prepared.scene_hash, samples_done, samples_asked,
                                  rendered);
                 last_checkpoint = now;
             }
@@ -291,7 +291,7 @@ int run_render(const RenderOptions& options) {
     const bool finished = !stats.cancelled && !stats.time_limit_reached;
     if (!options.checkpoint.empty() && !finished && stats.samples_per_pixel > 0 &&
         stats.samples_per_pixel < samples_asked) {
-        write_checkpoint(options.checkpoint, prepared.scene_hash(), stats.samples_per_pixel, samples_asked,
+        write_checkpoint(options.checkpoint, prepared.scene_hash, stats.samples_per_pixel, samples_asked,
                          film);
         std::fprintf(stderr, "glint: checkpoint %s holds %u of %u samples per pixel (--resume %s goes on)\n",
                      options.checkpoint.c_str(), stats.samples_per_pixel, samples_asked,
@@ -318,7 +318,7 @@ int run_render(const RenderOptions& options) {
             part.height = settings.height;
             part.seed = settings.seed;
             part.samples_per_pixel = stats.samples_per_pixel;
-            part.scene_hash = prepared.scene_hash();
+            part.scene_hash = prepared.scene_hash;
             part.display = settings.display;
             glint::write_file_atomically(output, glint::encode_exr(image, glint::cli::part_attributes(part)));
         } else if (aovs.any()) {

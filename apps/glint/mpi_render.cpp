@@ -161,7 +161,7 @@ int prepare_everywhere(const RenderOptions& options, int rank, int ranks, Prepar
     }
     if (status == 0) {
         try {
-            prepared = prepare_render(options, rank == 0);
+            prepared = prepare_render(options, rank == 0, true);
         } catch (const SceneError& e) {
             status = kExitBadInput;
             message = e.what();
@@ -188,7 +188,7 @@ int prepare_everywhere(const RenderOptions& options, int rank, int ranks, Prepar
     }
 
     // The same scene on every rank: files that differ between hosts would give an image of two scenes.
-    const std::uint64_t hash = prepared.scene_hash();
+    const std::uint64_t hash = prepared.scene_hash;
     std::vector<std::uint64_t> hashes(static_cast<size_t>(ranks));
     MPI_Gather(&hash, 1, MPI_UINT64_T, hashes.data(), 1, MPI_UINT64_T, 0, MPI_COMM_WORLD);
     int differing_rank = 0;

@@ -31,7 +31,11 @@ std::uint64_t fnv1a(const std::string& text) {
 
 }  // namespace
 
-PreparedRender prepare_render(const RenderOptions& options, bool print_warnings) {
+bool needs_scene_hash(const RenderOptions& options) {
+    return !options.resume.empty() || !options.checkpoint.empty() || options.tile.has_value();
+}
+
+PreparedRender prepare_render(const RenderOptions& options, bool print_warnings, bool with_scene_hash) {
     SceneDesc desc =
         options.scene_path.empty() ? default_scene() : load_scene(options.scene_path, options.import);
     if (print_warnings) {
@@ -41,10 +45,13 @@ PreparedRender prepare_render(const RenderOptions& options, bool print_warnings)
     // the file; the --set edits follow them, in order.
     apply_flags_and_sets(desc, options.flags, options.sets);
     PreparedRender prepared;
+    if (with_scene_hash) {
+        prepared.scene_hash =
+            fnv1a(std::string("glint ") + GLINT_VERSION + "\n" + write_scene_yaml(desc.root));
+    }
     const Node* camera = desc.root.find("camera");
     prepared.camera_yaml = camera ? write_scene_yaml(*camera) : "{} (the default camera)";
     prepared.scene = build_scene(desc);
-    prepared.scene_tree = std::move(desc.root);
     if (print_warnings) {
         for (const std::string& warning : scene_warnings(prepared.scene)) {
             std::cerr << "glint: warning: " << warning << '\n';
@@ -54,10 +61,6 @@ PreparedRender prepare_render(const RenderOptions& options, bool print_warnings)
         prepared.scene.view.settings.threads = *options.threads;
     }
     return prepared;
-}
-
-std::uint64_t PreparedRender::scene_hash() const {
-    return fnv1a(std::string("glint ") + GLINT_VERSION + "\n" + write_scene_yaml(scene_tree));
 }
 
 Image film_window(const Film& film, const PixelWindow& window) {

@@ -13,7 +13,6 @@
 #include "glint/image/film.hpp"
 #include "glint/image/image.hpp"
 #include "glint/import/importer.hpp"
-#include "glint/params/node.hpp"
 #include "glint/render/render.hpp"
 #include "glint/scene/scene.hpp"
 #include "glint/scene/scene_set.hpp"
@@ -42,20 +41,22 @@ struct RenderOptions {
 std::filesystem::path render_output_path(const RenderOptions& options);
 
 // The scene of `options` loaded, edited by the flags and the --set edits in order, and built, with
-// --threads applied. `scene_hash()` identifies what was built: a hash of glint's version and of the
+// --threads applied. `scene_hash` identifies what was built: a hash of glint's version and of the
 // scene's tree as YAML after the edits (so two parts or two ranks of different scenes, seeds or sample
-// counts differ), not of the files the scene names (meshes, textures). The importers' and the scene's
-// warnings are printed when `print_warnings`. Throws SceneError.
+// counts differ), not of the files the scene names (meshes, textures). It is computed only when
+// `with_scene_hash` (otherwise 0): writing the tree out takes 8.8 M instructions on RTIOW's final scene,
+// 11 % of its start-up, which a plain render does not need. The importers' and the scene's warnings are
+// printed when `print_warnings`. Throws SceneError.
 struct PreparedRender {
     Scene scene;
-    Node scene_tree;          // the tree the scene was built from, after the edits
+    std::uint64_t scene_hash = 0;
     std::string camera_yaml;  // the scene's camera block as built from (written into EXR metadata)
-
-    // Computed when asked (checkpoints, parts, MPI), not in every render: writing the tree out takes
-    // ~8 M instructions (~2 ms) on RTIOW's final scene of 488 objects, 10 % of its start-up.
-    std::uint64_t scene_hash() const;
 };
-PreparedRender prepare_render(const RenderOptions& options, bool print_warnings);
+PreparedRender prepare_render(const RenderOptions& options, bool print_warnings, bool with_scene_hash);
+
+// Whether a one-process render needs the scene hash: to resume from a checkpoint, to write one, or to
+// write a tile part. (An MPI render always does: its ranks compare theirs.)
+bool needs_scene_hash(const RenderOptions& options);
 
 // The pixels of `window` of a film, as Film::to_image gives them, without converting the rest.
 Image film_window(const Film& film, const PixelWindow& window);

@@ -80,11 +80,15 @@ TEST(YamlLoader, ColumnsCountBytesAfterNonAsciiCharacters) {
 
 TEST(YamlLoader, EveryLineOfNonAsciiTextCountsItsOwnBytes) {
     // The loader finds each line's first byte once and measures the line's marks from it: marks on the
-    // same line after several characters of two and three bytes, then lines whose characters differ.
+    // same line after several characters of two and three bytes, then lines whose characters differ,
+    // then a line whose first mark follows multi-byte characters.
     const std::string text =
         "a: [\"\xE2\x80\x94\xE2\x80\x94\", 1, \"\xC3\xA9\", 2]\n"
         "b: {x: \"\xC3\xA9\xC3\xA9\xC3\xA9\", y: 3, z: 4}\n"
-        "c: [5, \"\xE2\x80\x94\", 6]\n";
+        "c: [5, \"\xE2\x80\x94\", 6]\n"
+        // A quoted scalar that goes on to the next line: that line's first marks follow two
+        // three-byte characters, so its start is found by walking back over them.
+        "d: [\"\xC3\xA9\n  \xE2\x80\x94\xE2\x80\x94\", 7]\n";
     const SceneDesc desc = parse_scene_text(text, "x.yaml", ".");
     const Node& a = *desc.root.find("a");
     EXPECT_EQ(a.items[1].pos.column, column_of(text, 1, "1,"));
@@ -98,6 +102,9 @@ TEST(YamlLoader, EveryLineOfNonAsciiTextCountsItsOwnBytes) {
     EXPECT_EQ(c.items[0].pos.line, 3);
     EXPECT_EQ(c.items[0].pos.column, column_of(text, 3, "5,"));
     EXPECT_EQ(c.items[2].pos.column, column_of(text, 3, "6]"));
+    const Node& d = *desc.root.find("d");
+    EXPECT_EQ(d.items[1].pos.line, 5);
+    EXPECT_EQ(d.items[1].pos.column, column_of(text, 5, "7]"));
 }
 
 TEST(YamlLoader, AByteOrderMarkIsPartOfTheFirstLinesColumns) {

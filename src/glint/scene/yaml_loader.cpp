@@ -42,7 +42,7 @@ class ByteColumns {
         if (!ascii_) {
             // The line's start is `column` characters back from the mark's byte (back, so that the
             // cursor only moves forwards). Line 1 starts at byte 0, before any byte-order mark. It is
-            // found once a line: walking back from every mark cost 8 M instructions on RTIOW's final
+            // found once a line: walking back from every mark cost 8.3 M instructions on RTIOW's final
             // scene, whose lines are 200 characters of about 20 events each.
             const std::size_t at = byte_of(mark.index);
             if (mark.line != line_) {
