@@ -163,16 +163,23 @@ try {
   const scene5 = await page.evaluate(() => fetch('/api/scene').then((r) => r.json()));
   const target = scene5.scene.camera.look_at;
   assert.deepEqual(target, [0, 0.8, 0]);
-  const frameGeneration5 = (await stats(page)).generation;
   await page.locator('#image').dblclick({position: {x: box.width / 2, y: box.height / 2}});
-  // Wait (a synchronous predicate: Playwright does not await a promise a predicate returns, which
-  // made this wait end at once) until the error shows or the frames' generation moves on, and take the
-  // error's text in the same evaluation, since a later read could find it already cleared.
-  const outcome = await (await page.waitForFunction((g) => {
-    const error = document.getElementById('error');
-    if (!error.hidden) return {error: error.textContent};
-    return Number(document.getElementById('stats').dataset.generation) > g && {changed: true};
-  }, frameGeneration5)).jsonValue();
+  // Wait for the outcome itself: the error shown, or the scene's camera given a focus distance. A wait
+  // for the frames' generation to move on is not enough: the frame of the albedo edit above can arrive
+  // after this point (it did in CI under the sanitizers), and the scene read then has no focus yet. The
+  // error's text is taken in the same evaluation that sees it, since a later read could find it cleared.
+  const focusDeadline = Date.now() + 30000;
+  let outcome = null;
+  while (!outcome) {
+    assert.ok(Date.now() < focusDeadline, 'the double click should set a focus distance or say why not');
+    outcome = await page.evaluate(async () => {
+      const error = document.getElementById('error');
+      if (!error.hidden) return {error: error.textContent};
+      const current = await fetch('/api/scene').then((r) => r.json());
+      return current.scene.camera.focus_distance !== undefined ? {changed: true} : null;
+    });
+    if (!outcome) await page.waitForTimeout(50);
+  }
   const focused = await page.evaluate(() => fetch('/api/scene').then((r) => r.json()));
   if (outcome.changed) {
     const eye = focused.scene.camera.eye;
