@@ -451,6 +451,40 @@ TEST(SamplePatterns, FilmAndLensInOneCallAreTheirDimensionsPoints) {
     }
 }
 
+TEST(SamplePatterns, APixelsCachedHashesGiveTheSamePointsInEveryDimension) {
+    // The render loop hashes each pixel's first dimensions once (PixelHashes) and hands every sample
+    // a key that reads them: every pattern must draw the same bits from it as from a key that hashes
+    // afresh, in the cached dimensions and past them, in 1-D and 2-D and for film and lens together.
+    const std::uint32_t dimensions = PixelHashes::kDimensions + 3;
+    for (const std::string& name : kAllPatterns) {
+        for (const std::uint32_t n : {1u, 16u, 64u}) {
+            const auto sampler = make_sampler(name, n);
+            for (std::uint32_t px = 0; px < 4; ++px) {
+                const PixelHashes pixel(SampleHashes::pixel_hash(11, px, 3 * px + 2));
+                for (std::uint32_t s = 0; s < sampler->samples_per_pixel(); ++s) {
+                    const SampleHashes fresh(SampleKey{11, px, 3 * px + 2, s});
+                    const SampleHashes cached(pixel, s);
+                    for (std::uint32_t d = 0; d < dimensions; ++d) {
+                        ASSERT_EQ(cached.pixel_bits(d), fresh.pixel_bits(d)) << d;
+                        ASSERT_EQ(cached.pixel_bits_mixed(d), mix64(fresh.pixel_bits(d))) << d;
+                        const Point2 a = sampler->sample_2d(cached, d), b = sampler->sample_2d(fresh, d);
+                        ASSERT_EQ(a.x, b.x) << name << " n=" << n << " s=" << s << " d=" << d;
+                        ASSERT_EQ(a.y, b.y) << name << " n=" << n << " s=" << s << " d=" << d;
+                        ASSERT_EQ(sampler->sample_1d(cached, d), sampler->sample_1d(fresh, d))
+                            << name << " n=" << n << " s=" << s << " d=" << d;
+                    }
+                    const FilmAndLens a = sampler->sample_film_and_lens(cached);
+                    const FilmAndLens b = sampler->sample_film_and_lens(fresh);
+                    ASSERT_EQ(a.film.x, b.film.x) << name;
+                    ASSERT_EQ(a.film.y, b.film.y) << name;
+                    ASSERT_EQ(a.lens.x, b.lens.x) << name;
+                    ASSERT_EQ(a.lens.y, b.lens.y) << name;
+                }
+            }
+        }
+    }
+}
+
 TEST(SamplePatterns, FilmAndLensDimensionsAreUncorrelated) {
     // Over many pixels, the film x and lens x of one sample must not be correlated (a pattern reusing
     // the same index order in both dimensions would give a correlation near 1).

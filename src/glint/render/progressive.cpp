@@ -100,11 +100,11 @@ bool ProgressiveRender::next_pass(const CancelCheck& cancelled, const TileDone& 
         TileTally& tally = tallies_[t];
         for (int y = tile.y0; y < tile.y1; ++y) {
             for (int x = tile.x0; x < tile.x1; ++x) {
-                const std::uint64_t pixel_hash = SampleHashes::pixel_hash(
-                    view_.settings.seed, static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y));
+                const PixelHashes pixel(SampleHashes::pixel_hash(
+                    view_.settings.seed, static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y)));
                 for (std::uint32_t s = first; s < first + count; ++s) {
                     const Rgb radiance =
-                        render_sample(world_, view_, *integrator_, x, y, pixel_hash, s, tally.rays);
+                        render_sample(world_, view_, *integrator_, x, y, pixel, s, tally.rays);
                     if (!radiance.is_finite()) {
                         if (tally.nonfinite++ == 0) {
                             tally.first_x = x;

@@ -38,7 +38,7 @@ __attribute__((always_inline)) inline ReversedPoint reversed_point(const SampleH
                                                                    std::uint32_t dimension) {
     const std::uint64_t seeds = key.pixel_bits(dimension);
     // The point's two seeds, drawn while the index is scrambled.
-    const std::uint64_t scramble_seeds = mix64(seeds);
+    const std::uint64_t scramble_seeds = key.pixel_bits_mixed(dimension);
     if (dimension == kLensDimension) {
         return lens_point(scrambled_index(key, key.pixel_bits(kFilmDimension)), scramble_seeds);
     }
@@ -76,7 +76,7 @@ FilmAndLens SobolSampler::sample_film_and_lens(const SampleHashes& key) const {
     // are reversed_point's for its dimension (SamplePatterns.FilmAndLensInOneCallAreTheirDimensionsPoints
     // checks that the two ways agree).
     return {scrambled_point(film),
-            scrambled_point(lens_point(film.x, mix64(key.pixel_bits(kLensDimension))))};
+            scrambled_point(lens_point(film.x, key.pixel_bits_mixed(kLensDimension)))};
 }
 
 double SobolSampler::sample_1d(const SampleHashes& key, std::uint32_t dimension) const {

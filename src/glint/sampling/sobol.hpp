@@ -25,6 +25,8 @@ namespace glint {
 class SobolSampler final : public Sampler {
   public:
     static constexpr std::uint32_t kStratifiedDimensions = 6;
+    // The render loop's PixelHashes holds these dimensions' seeds (hash.hpp).
+    static_assert(PixelHashes::kDimensions == kStratifiedDimensions);
 
     explicit SobolSampler(std::uint32_t samples_per_pixel) : n_(std::max(1u, samples_per_pixel)) {}
     std::uint32_t samples_per_pixel() const override { return n_; }
