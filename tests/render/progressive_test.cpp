@@ -40,6 +40,41 @@ TEST(ProgressiveRender, AllPassesGiveTheBitsOfRender) {
     EXPECT_EQ(progressive.film().sample_count(39, 22), 25u);
 }
 
+TEST(ProgressiveRender, APassOfSeveralSamplesGivesEachTheBitsOfRenderSample) {
+    // A pass of two or more samples hashes each pixel's dimensions once (PixelHashes) and hands the
+    // samples keys that read them; a one-sample pass and render_sample hash as they go. With sobol and
+    // a lens (film and lens read the cached dimensions) and a path of bounces (later ones too), the
+    // film must hold, to the bit, the sum of render_sample's radiances in sample order.
+    const Scene scene = test::scene_from_text(
+        "render: {width: 8, height: 6, samples: 3, sampler: sobol, integrator: path}\n"
+        "camera: {type: thin-lens, eye: [0, 1, 5], look_at: [0, 0.5, 0], fov: 40, lens_radius: 0.2}\n"
+        "objects:\n"
+        "  - {type: sphere, center: [0, 0.5, 0], radius: 0.5, material: {type: matte, albedo: [0.7, 0.5, "
+        "0.3]}}\n"
+        "  - {type: plane, point: [0, 0, 0], normal: [0, 1, 0], material: {type: matte, albedo: [0.5, 0.5, "
+        "0.5]}}\n"
+        "lights:\n  - {type: point, position: [1, 3, 2], intensity: 20}\n"
+        "background: [0.2, 0.3, 0.4]\n");
+    ProgressiveRender progressive(*scene.world, scene.view);
+    ASSERT_TRUE(progressive.next_pass());  // sample 0 alone
+    ASSERT_TRUE(progressive.next_pass());  // samples 1 and 2, from the pixel's PixelHashes
+    ASSERT_EQ(progressive.samples_done(), 3u);
+    RayCounters rays;
+    for (int y = 0; y < 6; ++y) {
+        for (int x = 0; x < 8; ++x) {
+            Rgb sum;
+            for (std::uint32_t s = 0; s < 3; ++s) {
+                sum += render_sample(*scene.world, scene.view, progressive.integrator(), x, y, s, rays);
+            }
+            const Rgb film = progressive.film().raw_pixel(x, y).sum;
+            ASSERT_EQ(film.r, sum.r) << x << ", " << y;
+            ASSERT_EQ(film.g, sum.g) << x << ", " << y;
+            ASSERT_EQ(film.b, sum.b) << x << ", " << y;
+        }
+    }
+    EXPECT_GT(rays.secondary, 0u);  // the paths bounced
+}
+
 TEST(ProgressiveRender, CancelledPassIsNotCounted) {
     const Scene scene = small_default_scene(4);
     ProgressiveRender progressive(*scene.world, scene.view);

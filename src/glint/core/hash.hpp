@@ -106,12 +106,12 @@ struct SampleKey {
     double uniform(std::uint32_t dimension) const { return to_unit_double(hash(dimension)); }
 };
 
-// A pixel's hashes, computed once for all of its samples by the render loop: the pixel's hash and,
-// for its first kDimensions dimensions, SampleHashes::pixel_bits and their mix64 (the sobol pattern's
-// scramble seeds). Each sample then draws its film, lens and first bounces' points without the two
-// dependent mix64 a dimension cost it, at the start of its chain of dependent operations:
-// bench/ab.py, 0.972 of the time for RTIOW's final scene and 0.953 for smallpt's scene at 16 spp, the
-// Cornell box unchanged; the same bits.
+// A pixel's hashes, computed by the render loop once for the samples one pass gives the pixel: the
+// pixel's hash and, for its first kDimensions dimensions, SampleHashes::pixel_bits and their mix64 (the
+// sobol pattern's scramble seeds). Each sample then draws its film, lens and first bounces' points
+// without the two dependent mix64 a dimension cost it, at the start of its chain of dependent
+// operations: bench/ab.py, 0.972 of the time for RTIOW's final scene and 0.953 for smallpt's scene at
+// 16 spp, the Cornell box unchanged; the same bits. Twelve mix64 a pixel: not worth it for one sample.
 struct PixelHashes {
     // sobol's stratified dimensions (SobolSampler::kStratifiedDimensions); past them the key hashes
     // afresh, as every key not made from a PixelHashes does.
@@ -131,7 +131,7 @@ struct PixelHashes {
 // sampler draws for one dimension is then a single mix64 of one of them plus a multiple of the
 // dimension, i.e. an output of a SplitMix64 stream seeded by the pixel or by the sample, instead of a
 // hash of all five values afresh (issue 13: that hashing was a seventh of a render). A key made from a
-// PixelHashes reads the pixel's first dimensions from it instead.
+// PixelHashes reads the pixel's first dimensions' bits from it instead of mixing them.
 class SampleHashes {
   public:
     // Implicit, so that a sampler can be asked with a plain SampleKey (tests, tools); the renderer builds
@@ -144,11 +144,13 @@ class SampleHashes {
           sample_(hash_values(pixel_hash, sample)),
           sample_index_(sample),
           sample_index_reversed_(reverse_bits(sample)) {}
-    // From the pixel's hashes with its cached dimensions (which must outlive this).
+    // From the pixel's hashes with its cached dimensions, which the key points to: they must outlive it
+    // (hence no temporary).
     constexpr SampleHashes(const PixelHashes& pixel, std::uint32_t sample)
         : SampleHashes(pixel.hash, sample) {
         pixel_cache_ = &pixel;
     }
+    SampleHashes(const PixelHashes&&, std::uint32_t) = delete;
     static constexpr std::uint64_t pixel_hash(std::uint64_t seed, std::uint32_t x, std::uint32_t y) {
         return hash_values(seed, x, y);
     }

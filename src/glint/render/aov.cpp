@@ -122,13 +122,14 @@ std::vector<ImageLayer> render_aovs(const World& world, const View& view, const 
         tbb::parallel_for(0, height, [&](int row) {
             const int y = window.y0 + row;
             for (int x = window.x0; x < window.x1; ++x) {
+                const PixelHashes pixel(SampleHashes::pixel_hash(
+                    view.settings.seed, static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y)));
                 Rgb albedo_sum;
                 Vec3 normal_sum;
                 double depth_sum = 0;
                 std::uint32_t hits = 0;
                 for (std::uint32_t s = 0; s < samples; ++s) {
-                    const SampleHashes key(SampleKey{view.settings.seed, static_cast<std::uint32_t>(x),
-                                                     static_cast<std::uint32_t>(y), s});
+                    const SampleHashes key(pixel, s);
                     const std::optional<Ray> ray = camera_ray(view, key, x, y);
                     if (!ray) {
                         continue;

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <optional>
 #include <stdexcept>
 
 namespace glint {
@@ -100,11 +101,17 @@ bool ProgressiveRender::next_pass(const CancelCheck& cancelled, const TileDone& 
         TileTally& tally = tallies_[t];
         for (int y = tile.y0; y < tile.y1; ++y) {
             for (int x = tile.x0; x < tile.x1; ++x) {
-                const PixelHashes pixel(SampleHashes::pixel_hash(
-                    view_.settings.seed, static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y)));
+                const std::uint64_t pixel_hash = SampleHashes::pixel_hash(
+                    view_.settings.seed, static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y));
+                // The pixel's hashed dimensions, for a pass of several samples (they cost two samples'
+                // worth of hashing); a one-sample pass hashes as it goes. The same bits either way.
+                std::optional<PixelHashes> pixel;
+                if (count > 1) {
+                    pixel.emplace(pixel_hash);
+                }
                 for (std::uint32_t s = first; s < first + count; ++s) {
-                    const Rgb radiance =
-                        render_sample(world_, view_, *integrator_, x, y, pixel, s, tally.rays);
+                    const SampleHashes key = pixel ? SampleHashes(*pixel, s) : SampleHashes(pixel_hash, s);
+                    const Rgb radiance = render_sample(world_, view_, *integrator_, x, y, key, tally.rays);
                     if (!radiance.is_finite()) {
                         if (tally.nonfinite++ == 0) {
                             tally.first_x = x;

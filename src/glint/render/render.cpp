@@ -23,11 +23,8 @@ std::optional<Ray> camera_ray(const View& view, const SampleHashes& key, int x, 
     return ray;
 }
 
-namespace {
-
-// One sample's radiance from its hashes: the camera ray, the integrator's path, the clamp.
-Rgb trace_sample(const World& world, const View& view, const Integrator& integrator, int x, int y,
-                 const SampleHashes& key, RayCounters& rays) {
+Rgb render_sample(const World& world, const View& view, const Integrator& integrator, int x, int y,
+                  const SampleHashes& key, RayCounters& rays) {
     const std::optional<Ray> ray = camera_ray(view, key, x, y);
     if (!ray) {
         return Rgb{};  // outside the camera's image (a fisheye's corners): black, nothing traced
@@ -42,20 +39,12 @@ Rgb trace_sample(const World& world, const View& view, const Integrator& integra
     return radiance;
 }
 
-}  // namespace
-
 Rgb render_sample(const World& world, const View& view, const Integrator& integrator, int x, int y,
                   std::uint32_t sample, RayCounters& rays) {
-    // One sample alone (the preview's first blocks, tests): the key hashes its dimensions as it goes.
     const SampleHashes key(SampleHashes::pixel_hash(view.settings.seed, static_cast<std::uint32_t>(x),
                                                     static_cast<std::uint32_t>(y)),
                            sample);
-    return trace_sample(world, view, integrator, x, y, key, rays);
-}
-
-Rgb render_sample(const World& world, const View& view, const Integrator& integrator, int x, int y,
-                  const PixelHashes& pixel, std::uint32_t sample, RayCounters& rays) {
-    return trace_sample(world, view, integrator, x, y, SampleHashes(pixel, sample), rays);
+    return render_sample(world, view, integrator, x, y, key, rays);
 }
 
 RenderStats render(const World& world, const View& view, Film& film, const RenderCallbacks& callbacks) {

@@ -64,9 +64,9 @@ std::optional<Ray> camera_ray(const View& view, const SampleHashes& key, int x, 
 // by `integrator` (the loop's: view.integrator prepared for the world, ProgressiveRender::integrator()).
 Rgb render_sample(const World& world, const View& view, const Integrator& integrator, int x, int y,
                   std::uint32_t sample, RayCounters& rays);
-// The same, given the PixelHashes of SampleHashes::pixel_hash(view.settings.seed, x, y), which a loop
-// over a pixel's samples computes once.
+// The same, given the sample's key: made from SampleHashes::pixel_hash(view.settings.seed, x, y) or from
+// its PixelHashes, which a loop over a pixel's samples computes once.
 Rgb render_sample(const World& world, const View& view, const Integrator& integrator, int x, int y,
-                  const PixelHashes& pixel, std::uint32_t sample, RayCounters& rays);
+                  const SampleHashes& key, RayCounters& rays);
 
 }  // namespace glint

@@ -54,7 +54,7 @@ Point2 HaltonSampler::sample_2d(const SampleHashes& key, std::uint32_t dimension
     const std::uint64_t pattern = key.pixel_bits(dimension);
     const std::uint32_t i = permute(pattern_index(key, n_), n_, static_cast<std::uint32_t>(pattern));
     const double x = bits_to_unit(owen_scramble(reverse_bits(i), static_cast<std::uint32_t>(pattern >> 32)));
-    const double y = owen_scrambled_radical_inverse3(i, mix64(pattern), digits3_);
+    const double y = owen_scrambled_radical_inverse3(i, key.pixel_bits_mixed(dimension), digits3_);
     return {x, y};
 }
 

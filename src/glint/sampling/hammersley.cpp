@@ -14,7 +14,7 @@ Point2 HammersleySampler::sample_2d(const SampleHashes& key, std::uint32_t dimen
     const std::uint64_t pattern = key.pixel_bits(dimension);
     const std::uint32_t i = permute(pattern_index(key, n_), n_, static_cast<std::uint32_t>(pattern));
     // The rotation (high half) and the offset (low half) of x, the same for every point of the pixel.
-    const std::uint64_t rotation = mix64(pattern);
+    const std::uint64_t rotation = key.pixel_bits_mixed(dimension);
     const std::uint32_t stratum = static_cast<std::uint32_t>((i + (rotation >> 32) % n_) % n_);
     const double offset = bits_to_unit(static_cast<std::uint32_t>(rotation));
     const double x = std::min((stratum + offset) / n_, kOneMinusEpsilon);

@@ -8,8 +8,9 @@
 // pixel) gets its own scramble, so patterns are not correlated across dimensions or neighbours; the one
 // exception is `sobol`'s lens, stratified jointly with the film on purpose (sobol.hpp).
 // Samplers are asked with SampleHashes, the key's hashes computed once per sample (a plain SampleKey
-// converts), and draw each dimension's numbers from them with one mix64: the per-sample cost of a
-// pattern is that and its own arithmetic.
+// converts), and draw each dimension's numbers from them with one or two mix64, none for the pixel's
+// bits in the dimensions the render loop hashed once for the pixel (PixelHashes): the per-sample cost
+// of a pattern is that and its own arithmetic.
 #pragma once
 
 #include <cstdint>

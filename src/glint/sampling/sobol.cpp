@@ -75,8 +75,7 @@ FilmAndLens SobolSampler::sample_film_and_lens(const SampleHashes& key) const {
     // film.x is the film's scrambled index (dimension 0 reversed is the index itself); the lens's seeds
     // are reversed_point's for its dimension (SamplePatterns.FilmAndLensInOneCallAreTheirDimensionsPoints
     // checks that the two ways agree).
-    return {scrambled_point(film),
-            scrambled_point(lens_point(film.x, key.pixel_bits_mixed(kLensDimension)))};
+    return {scrambled_point(film), scrambled_point(lens_point(film.x, key.pixel_bits_mixed(kLensDimension)))};
 }
 
 double SobolSampler::sample_1d(const SampleHashes& key, std::uint32_t dimension) const {
