@@ -106,6 +106,12 @@ struct SampleKey {
     double uniform(std::uint32_t dimension) const { return to_unit_double(hash(dimension)); }
 };
 
+// 64 random bits shared by every sample of a pixel in `dimension`, from the pixel's hash: what
+// SampleHashes::pixel_bits gives and PixelHashes caches (one formula, so that the two agree to the bit).
+constexpr std::uint64_t pixel_dimension_bits(std::uint64_t pixel_hash, std::uint32_t dimension) {
+    return mix64(pixel_hash + dimension * kGoldenGamma);
+}
+
 // A pixel's hashes, computed by the render loop once for the samples one pass gives the pixel: the
 // pixel's hash and, for its first kDimensions dimensions, SampleHashes::pixel_bits and their mix64 (the
 // sobol pattern's scramble seeds). Each sample then draws its film, lens and first bounces' points
@@ -118,7 +124,7 @@ struct PixelHashes {
     static constexpr std::uint32_t kDimensions = 6;
     explicit constexpr PixelHashes(std::uint64_t pixel_hash) : hash(pixel_hash) {
         for (std::uint32_t d = 0; d < kDimensions; ++d) {
-            bits[d] = mix64(pixel_hash + d * kGoldenGamma);
+            bits[d] = pixel_dimension_bits(pixel_hash, d);
             mixed_bits[d] = mix64(bits[d]);
         }
     }
@@ -164,7 +170,7 @@ class SampleHashes {
         if (pixel_cache_ != nullptr && dimension < PixelHashes::kDimensions) {
             return pixel_cache_->bits[dimension];
         }
-        return mix64(pixel_ + dimension * kGoldenGamma);
+        return pixel_dimension_bits(pixel_, dimension);
     }
     // mix64(pixel_bits(dimension)): 64 more bits of the pixel's scramble in `dimension`.
     constexpr std::uint64_t pixel_bits_mixed(std::uint32_t dimension) const {
