@@ -485,6 +485,40 @@ TEST(SamplePatterns, APixelsCachedHashesGiveTheSamePointsInEveryDimension) {
     }
 }
 
+TEST(SamplePatterns, CameraPointsTogetherAreOneByOnesPoints) {
+    // The render loop draws the camera points of a pixel's pass in one call (sobol computes them eight
+    // samples at a time in AVX2 lanes when the CPU has AVX2): the same bits as one sample at a time,
+    // for every pattern, with and without a lens, for passes that fill the lanes, leave some empty or
+    // span several groups of eight, and for first samples where the 32-bit index wraps.
+    const std::vector<std::uint32_t> firsts = {0, 1, 3, 8, 1000, 0xfffffffbu};
+    const std::vector<std::uint32_t> counts = {1, 2, 3, 4, 5, 8, 9, 16};
+    for (const std::string& name : kAllPatterns) {
+        const auto sampler = make_sampler(name, 64);
+        for (std::uint32_t px = 0; px < 3; ++px) {
+            const PixelHashes pixel(SampleHashes::pixel_hash(5, px, 7 * px + 1));
+            for (const std::uint32_t first : firsts) {
+                for (const std::uint32_t count : counts) {
+                    for (const bool lens : {true, false}) {
+                        std::vector<FilmAndLens> together(count);
+                        sampler->camera_points(pixel, first, lens, together);
+                        for (std::uint32_t i = 0; i < count; ++i) {
+                            const SampleHashes key(pixel, first + i);
+                            const FilmAndLens alone =
+                                lens ? sampler->sample_film_and_lens(key)
+                                     : FilmAndLens{sampler->sample_2d(key, kFilmDimension), {}};
+                            const std::string where =
+                                name + " first=" + std::to_string(first) + " count=" + std::to_string(count) +
+                                " i=" + std::to_string(i) + " lens=" + std::to_string(lens);
+                            ASSERT_EQ(together[i].film, alone.film) << where;
+                            ASSERT_EQ(together[i].lens, alone.lens) << where;
+                        }
+                    }
+                }
+            }
+        }
+    }
+}
+
 TEST(SamplePatterns, FilmAndLensDimensionsAreUncorrelated) {
     // Over many pixels, the film x and lens x of one sample must not be correlated (a pattern reusing
     // the same index order in both dimensions would give a correlation near 1).

@@ -17,6 +17,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "glint/core/cpu.hpp"
+
 namespace glint {
 namespace {
 
@@ -714,8 +716,7 @@ void WideBvh::build(std::size_t count, const std::function<Bounds3(std::size_t)>
 
 bool WideBvh::cpu_has_avx2() {
 #ifdef GLINT_BVH_HAVE_AVX2_PATH
-    static const bool avx2 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
-    return avx2;
+    return cpu_has_avx2_and_fma();
 #else
     return false;
 #endif

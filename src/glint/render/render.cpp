@@ -11,21 +11,32 @@
 
 namespace glint {
 
-std::optional<Ray> camera_ray(const View& view, const SampleHashes& key, int x, int y) {
-    const FilmAndLens sample = view.camera->uses_lens()
-                                   ? view.sampler->sample_film_and_lens(key)
-                                   : FilmAndLens{view.sampler->sample_2d(key, kFilmDimension), {}};
-    const Point2 offset = view.settings.filter.offset(sample.film);
-    const Ray ray = view.camera->generate_ray({x + offset.x, y + offset.y}, sample.lens);
+FilmAndLens camera_points(const View& view, const SampleHashes& key) {
+    return view.camera->uses_lens() ? view.sampler->sample_film_and_lens(key)
+                                    : FilmAndLens{view.sampler->sample_2d(key, kFilmDimension), {}};
+}
+
+std::optional<Ray> camera_ray(const View& view, const FilmAndLens& points, int x, int y) {
+    const Point2 offset = view.settings.filter.offset(points.film);
+    const Ray ray = view.camera->generate_ray({x + offset.x, y + offset.y}, points.lens);
     if (!sees_scene(ray)) {
         return std::nullopt;
     }
     return ray;
 }
 
+std::optional<Ray> camera_ray(const View& view, const SampleHashes& key, int x, int y) {
+    return camera_ray(view, camera_points(view, key), x, y);
+}
+
 Rgb render_sample(const World& world, const View& view, const Integrator& integrator, int x, int y,
                   const SampleHashes& key, RayCounters& rays) {
-    const std::optional<Ray> ray = camera_ray(view, key, x, y);
+    return render_sample(world, view, integrator, x, y, key, camera_points(view, key), rays);
+}
+
+Rgb render_sample(const World& world, const View& view, const Integrator& integrator, int x, int y,
+                  const SampleHashes& key, const FilmAndLens& points, RayCounters& rays) {
+    const std::optional<Ray> ray = camera_ray(view, points, x, y);
     if (!ray) {
         return Rgb{};  // outside the camera's image (a fisheye's corners): black, nothing traced
     }

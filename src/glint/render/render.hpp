@@ -59,6 +59,11 @@ RenderStats render(const World& world, const View& view, Film& film, const Rende
 // The camera ray of one sample (pixel x, y; its film and lens positions from the view's sampler), or
 // nullopt where the camera sees nothing (a fisheye's corners).
 std::optional<Ray> camera_ray(const View& view, const SampleHashes& key, int x, int y);
+// The same from the sample's film and lens points, already drawn.
+std::optional<Ray> camera_ray(const View& view, const FilmAndLens& points, int x, int y);
+// The sample's points on the film and, for a camera with a lens, on the lens (else {0, 0}): what the
+// view's sampler gives the key, one sample's worth of Sampler::camera_points.
+FilmAndLens camera_points(const View& view, const SampleHashes& key);
 
 // The radiance of one sample: what the render loop adds to the film for (pixel, sample index), traced
 // by `integrator` (the loop's: view.integrator prepared for the world, ProgressiveRender::integrator()).
@@ -68,5 +73,9 @@ Rgb render_sample(const World& world, const View& view, const Integrator& integr
 // its PixelHashes, which a loop over a pixel's samples computes once.
 Rgb render_sample(const World& world, const View& view, const Integrator& integrator, int x, int y,
                   const SampleHashes& key, RayCounters& rays);
+// The same, given also the key's camera points (camera_points(view, key), or the pixel's
+// Sampler::camera_points, which a loop over a pixel's samples draws together).
+Rgb render_sample(const World& world, const View& view, const Integrator& integrator, int x, int y,
+                  const SampleHashes& key, const FilmAndLens& points, RayCounters& rays);
 
 }  // namespace glint

@@ -107,6 +107,8 @@ class SobolReversedTable {
         return table_[0][i & 0xffu] ^ table_[1][(i >> 8) & 0xffu] ^ table_[2][(i >> 16) & 0xffu] ^
                table_[3][i >> 24];
     }
+    // The table operator() reads byte `byte` of i in (256 entries): for a lookup in vector lanes.
+    constexpr const std::uint32_t* byte_table(std::uint32_t byte) const { return table_[byte]; }
 
   private:
     std::uint32_t table_[4][256] = {};

@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -62,6 +63,18 @@ class Sampler {
     // one shuffled index (sobol) computes it once.
     virtual FilmAndLens sample_film_and_lens(const SampleHashes& key) const {
         return {sample_2d(key, kFilmDimension), sample_2d(key, kLensDimension)};
+    }
+
+    // The camera points of samples first … first + out.size() − 1 of one pixel: sample_film_and_lens
+    // for each, or with `lens` false only the film's point (sample_2d in kFilmDimension; the lens is
+    // left {0, 0}). The same bits as asking one sample at a time, which is what this default does; a
+    // pattern that computes them faster together (sobol, in AVX2 lanes) overrides it.
+    virtual void camera_points(const PixelHashes& pixel, std::uint32_t first, bool lens,
+                               std::span<FilmAndLens> out) const {
+        for (std::uint32_t i = 0; i < out.size(); ++i) {
+            const SampleHashes key(pixel, first + i);
+            out[i] = lens ? sample_film_and_lens(key) : FilmAndLens{sample_2d(key, kFilmDimension), {}};
+        }
     }
 };
 
