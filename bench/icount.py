@@ -20,6 +20,7 @@ import sys
 import tempfile
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+# RTIOW's --max-depth 49 is the scene's own max_depth, spelt out as bench/peers.py and the notes do.
 SCENES = [
     ('rtiow-final', ['examples/rtiow-final.yaml', '--width', '200', '--height', '112', '--spp', '4',
                      '--max-depth', '49']),
@@ -43,15 +44,28 @@ def count(glint, args, tmp):
     return int(found.group(1))
 
 
+def executable(build):
+    """A build's path made absolute (the renders run from the repository's root), or a bare command
+    name as found on PATH."""
+    if os.sep not in build and shutil.which(build):
+        return shutil.which(build)
+    return os.path.abspath(build)
+
+
 def main():
     builds = sys.argv[1:]
     if not builds:
         sys.exit(__doc__)
     if shutil.which('valgrind') is None:
         sys.exit('bench/icount.py needs valgrind: apt-get install valgrind')
+    # Columns: each build's count, in the order given, then each later build's change against the first.
+    print('builds: ' + '; '.join(f'{i + 1}. {b}' for i, b in enumerate(builds)))
+    header = [f'{i + 1:>11}' for i in range(len(builds))]
+    header += [f'{i + 1} vs 1' for i in range(1, len(builds))]
+    print(f'{"scene":14} ' + '  '.join(header), flush=True)
     with tempfile.TemporaryDirectory() as tmp:
         for scene, args in SCENES:
-            counts = [count(os.path.abspath(b), args, tmp) for b in builds]
+            counts = [count(executable(b), args, tmp) for b in builds]
             cells = [f'{c / 1e6:9.1f} M' for c in counts]
             if len(counts) > 1:
                 cells += [f'{c / counts[0] - 1:+.2%}' for c in counts[1:]]
