@@ -107,9 +107,9 @@ bool ProgressiveRender::next_pass(const CancelCheck& cancelled, const TileDone& 
                     view_.settings.seed, static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y));
                 // The pixel's hashed dimensions, for a pass of several samples (they cost two samples'
                 // worth of hashing); a one-sample pass hashes as it goes. The same bits either way.
-                // So are the camera points of its samples, drawn together (by sobol in AVX2 lanes,
-                // eight samples at a time): RTIOW's final scene at 32 spp renders in 0.96–0.97 of the
-                // time (bench/ab.py), with the same bits.
+                // A pass of several samples also draws its samples' camera points together (sobol:
+                // eight at a time in AVX2 lanes): RTIOW's final scene at 32 spp renders in 0.96–0.97
+                // of the time (bench/ab.py).
                 std::optional<PixelHashes> pixel;
                 std::array<FilmAndLens, kMaxPassSamples> points;
                 if (count > 1) {

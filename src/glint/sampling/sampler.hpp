@@ -10,7 +10,8 @@
 // Samplers are asked with SampleHashes, the key's hashes computed once per sample (a plain SampleKey
 // converts), and draw each dimension's numbers from them with one or two mix64, none for the pixel's
 // bits in the dimensions the render loop hashed once for the pixel (PixelHashes): the per-sample cost
-// of a pattern is that and its own arithmetic.
+// of a pattern is that and its own arithmetic. The camera points of a pass's samples are asked for
+// together, from the pixel's PixelHashes (camera_points), so that a pattern can compute them side by side.
 #pragma once
 
 #include <cstdint>

@@ -70,9 +70,9 @@ __attribute__((always_inline)) inline Point2 scrambled_point(const ReversedPoint
 
 #ifdef GLINT_HAVE_X86_SIMD
 // ---- eight samples' camera points at a time, in the 32-bit lanes of AVX2 registers -------------------
-// Each function is its scalar namesake above or in low_discrepancy.hpp, lane by lane: integer operations
-// (wrapping as uint32_t does), so the same bits. SamplePatterns.CameraPointsTogetherAreOneByOnesPoints
-// checks it.
+// Each function is its scalar namesake (above, in low_discrepancy.hpp or in core/hash.hpp) lane by lane:
+// integer operations that wrap as uint32_t does, and an exact conversion to double, so the same bits
+// (SamplePatterns.CameraPointsTogetherAreOneByOnesPoints checks it).
 #define GLINT_AVX2_INLINE __attribute__((target("avx2,fma"), always_inline)) inline
 
 GLINT_AVX2_INLINE __m256i broadcast(std::uint32_t x) {
@@ -188,16 +188,16 @@ __attribute__((target("avx2,fma"))) void camera_points_avx2(const PixelHashes& p
         const __m256i index = reverse_bits_lanes(laine_karras_lanes(reverse_bits_lanes(sample), film_seed));
         const PointLanes film = scrambled_point_lanes(index, sobol_dimension1_reversed_lanes(index),
                                                       pixel.mixed_bits[kFilmDimension]);
-        PointLanes lens_point{};
+        PointLanes lens_lanes{};  // {0, 0} points without a lens, as one sample at a time gives
         if (lens) {
-            lens_point = scrambled_point_lanes(table_lanes(kSobolDimension2Reversed, index),
+            lens_lanes = scrambled_point_lanes(table_lanes(kSobolDimension2Reversed, index),
                                                table_lanes(kSobolDimension3Reversed, index),
                                                pixel.mixed_bits[kLensDimension]);
         }
         FilmAndLens* rows = out.data() + done;
-        store_rows(film.x_0_3, film.y_0_3, lens_point.x_0_3, lens_point.y_0_3, rows, std::min(count, 4u));
+        store_rows(film.x_0_3, film.y_0_3, lens_lanes.x_0_3, lens_lanes.y_0_3, rows, std::min(count, 4u));
         if (count > 4) {
-            store_rows(film.x_4_7, film.y_4_7, lens_point.x_4_7, lens_point.y_4_7, rows + 4, count - 4);
+            store_rows(film.x_4_7, film.y_4_7, lens_lanes.x_4_7, lens_lanes.y_4_7, rows + 4, count - 4);
         }
     }
 }
