@@ -12,8 +12,7 @@
 namespace glint {
 
 FilmAndLens camera_points(const View& view, const SampleHashes& key) {
-    return view.camera->uses_lens() ? view.sampler->sample_film_and_lens(key)
-                                    : FilmAndLens{view.sampler->sample_2d(key, kFilmDimension), {}};
+    return view.sampler->camera_point(key, view.camera->uses_lens());
 }
 
 std::optional<Ray> camera_ray(const View& view, const FilmAndLens& points, int x, int y) {

@@ -66,15 +66,20 @@ class Sampler {
         return {sample_2d(key, kFilmDimension), sample_2d(key, kLensDimension)};
     }
 
-    // The camera points of samples first … first + out.size() − 1 of one pixel: sample_film_and_lens
-    // for each, or with `lens` false only the film's point (sample_2d in kFilmDimension; the lens is
-    // left {0, 0}). The same bits as asking one sample at a time, which is what this default does; a
-    // pattern that computes them faster together (sobol, in AVX2 lanes) overrides it.
+    // One sample's camera points: sample_film_and_lens, or with `lens` false only the film's point
+    // (sample_2d in kFilmDimension; the lens is left {0, 0}).
+    FilmAndLens camera_point(const SampleHashes& key, bool lens) const {
+        return lens ? sample_film_and_lens(key) : FilmAndLens{sample_2d(key, kFilmDimension), {}};
+    }
+
+    // camera_point of samples first … first + out.size() − 1 of one pixel. The same bits as asking one
+    // sample at a time, which is what this default does; a pattern that computes them faster together
+    // (sobol, in AVX2 lanes) overrides it.
     virtual void camera_points(const PixelHashes& pixel, std::uint32_t first, bool lens,
                                std::span<FilmAndLens> out) const {
         for (std::uint32_t i = 0; i < out.size(); ++i) {
             const SampleHashes key(pixel, first + i);
-            out[i] = lens ? sample_film_and_lens(key) : FilmAndLens{sample_2d(key, kFilmDimension), {}};
+            out[i] = camera_point(key, lens);
         }
     }
 };
