@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <limits>
+#include <string>
+#include <vector>
 
 #include "glint/render/render.hpp"
 #include "glint/scene/scene.hpp"
@@ -73,6 +75,70 @@ TEST(ProgressiveRender, APassOfSeveralSamplesGivesEachTheBitsOfRenderSample) {
         }
     }
     EXPECT_GT(rays.secondary, 0u);  // the paths bounced
+}
+
+TEST(ProgressiveRender, SamplesTakenTogetherAreEachRenderSamplesBits) {
+    // render_samples hands a pass's camera rays to the integrator together: the path tracer traces all
+    // their first rays before any path goes on, the others one sample after the other. Each sample must
+    // get, to the bit, what render_sample gives it alone, with the same rays counted: through a
+    // fisheye whose corners see nothing (those samples are black and left out of the call), with the
+    // firefly clamp, for 1 to 20 samples (beyond 16 the samples go in two calls) and from any first
+    // sample.
+    for (const char* integrator : {"path", "whitted", "raycast"}) {
+        const Scene scene = test::scene_from_text(
+            std::string(
+                "render: {width: 6, height: 6, samples: 4, sampler: sobol, clamp: 0.5, integrator: ") +
+            integrator +
+            "}\n"
+            "camera: {type: fisheye, eye: [0, 1, 5], look_at: [0, 0.5, 0], fov: 200}\n"
+            "objects:\n"
+            "  - {type: sphere, center: [0, 0.5, 0], radius: 0.5, material: {type: dielectric, ior: 1.5}}\n"
+            "  - {type: sphere, center: [1, 0.3, 0.5], radius: 0.3, material: {type: matte, albedo: [0.7, "
+            "0.5, 0.3]}}\n"
+            "  - {type: plane, point: [0, 0, 0], normal: [0, 1, 0], material: {type: matte, albedo: [0.5, "
+            "0.5, 0.5]}}\n"
+            "lights:\n  - {type: point, position: [1, 3, 2], intensity: 40}\n"
+            "  - {type: area, radiance: 5, shape: {type: sphere, center: [-1, 2, 1], radius: 0.3}}\n"
+            "background: [0.2, 0.3, 0.4]\n");
+        ProgressiveRender progressive(*scene.world, scene.view);
+        const Integrator& traced = progressive.integrator();
+        int black = 0;
+        for (const std::uint32_t count : {1u, 2u, 7u, 16u, 20u}) {
+            for (const std::uint32_t first : {0u, 3u}) {
+                for (int y = 0; y < 6; ++y) {
+                    for (int x = 0; x < 6; ++x) {
+                        const std::uint64_t hash =
+                            SampleHashes::pixel_hash(scene.view.settings.seed, static_cast<std::uint32_t>(x),
+                                                     static_cast<std::uint32_t>(y));
+                        const PixelHashes pixel(hash);
+                        std::vector<FilmAndLens> points(count);
+                        scene.view.sampler->camera_points(pixel, first, scene.view.camera->uses_lens(),
+                                                          points);
+                        std::vector<Rgb> together(count);
+                        RayCounters rays_together;
+                        render_samples(*scene.world, scene.view, traced, x, y, pixel, first, points,
+                                       rays_together, together);
+                        RayCounters rays_alone;
+                        for (std::uint32_t i = 0; i < count; ++i) {
+                            const Rgb alone =
+                                render_sample(*scene.world, scene.view, traced, x, y, first + i, rays_alone);
+                            ASSERT_EQ(together[i].r, alone.r)
+                                << integrator << " " << x << ", " << y << ", " << i;
+                            ASSERT_EQ(together[i].g, alone.g)
+                                << integrator << " " << x << ", " << y << ", " << i;
+                            ASSERT_EQ(together[i].b, alone.b)
+                                << integrator << " " << x << ", " << y << ", " << i;
+                            black += alone.is_black() ? 1 : 0;
+                        }
+                        ASSERT_EQ(rays_together.camera, rays_alone.camera);
+                        ASSERT_EQ(rays_together.shadow, rays_alone.shadow);
+                        ASSERT_EQ(rays_together.secondary, rays_alone.secondary);
+                    }
+                }
+            }
+        }
+        EXPECT_GT(black, 0) << integrator;  // the fisheye's corners
+    }
 }
 
 TEST(ProgressiveRender, CancelledPassIsNotCounted) {

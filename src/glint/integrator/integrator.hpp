@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -39,6 +40,16 @@ class Integrator {
     // Radiance arriving at the camera along `ray`. `samples` supplies this path's random numbers.
     virtual Rgb radiance(const World& world, const Ray& ray, SampleStream& samples,
                          RayCounters& rays) const = 0;
+    // The radiances along several camera rays, each path with its own stream: out[i] is exactly
+    // radiance(world, camera_rays[i], streams[i], rays). The render loop passes the camera rays of one
+    // pixel's pass together; by default they are traced one after the other, and the path tracer traces
+    // all of their first rays before it follows any path on (PathIntegrator::radiances says why).
+    virtual void radiances(const World& world, std::span<const Ray> camera_rays,
+                           std::span<SampleStream> streams, RayCounters& rays, std::span<Rgb> out) const {
+        for (std::size_t i = 0; i < camera_rays.size(); ++i) {
+            out[i] = radiance(world, camera_rays[i], streams[i], rays);
+        }
+    }
 
     // This integrator, readied for `world` seen through `camera` on a film of `film`'s size: what it
     // learns of the view before the first sample (the path tracer: where each light is seen, see

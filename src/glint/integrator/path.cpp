@@ -1,5 +1,8 @@
 #include "glint/integrator/path.hpp"
 
+#include <algorithm>
+
+#include "glint/core/fixed_vector.hpp"
 #include "glint/integrator/direct_lighting.hpp"
 #include "glint/integrator/whitted.hpp"
 #include "glint/world/world.hpp"
@@ -44,110 +47,160 @@ double PathIntegrator::light_pdf_of(const World& world, std::size_t index, const
     return visibility_ ? visibility_->pdf(index, light, at, wi, on_light) : light.pdf(at, wi, on_light);
 }
 
-Rgb PathIntegrator::radiance(const World& world, const Ray& camera_ray, SampleStream& samples,
-                             RayCounters& rays) const {
-    ++rays.camera;
+// A path's state from bounce to bounce. It holds its two Hit records, to which it refers, so it is
+// built where it stays, never copied. (The state kept apart from the records, so that a loop could
+// hold it in registers, ran 3 % slower on RTIOW's final scene.)
+struct PathIntegrator::Path {
+    Path(const Ray& camera_ray, SampleStream& stream) : ray(camera_ray), samples(&stream) {}
+    Path(const Path&) = delete;
+    Path& operator=(const Path&) = delete;
+
+    Ray ray;  // this bounce's
+    SampleStream* samples;
     Rgb radiance;
-    Rgb throughput(1.0);
-    Ray ray = camera_ray;
+    Rgb throughput{1.0};
     bool specular = true;  // the last bounce was a delta lobe (or the camera): emission counts in full
-    double bsdf_pdf = 0;   // solid-angle density of the last BSDF sample
+    bool found = false;    // whether this bounce's ray hit anything (in *current)
+    int bounce = 0;
+    double bsdf_pdf = 0;  // solid-angle density of the last BSDF sample
     // This bounce's hit and the last vertex (facing the way the path came): two records that trade
     // places each bounce, since copying a 112-byte Hit, and a facing copy of it, cost ~45 instructions
     // a vertex (2 % of the Cornell box).
     Hit records[2];
     Hit* last = &records[0];
     Hit* current = &records[1];
+};
 
-    for (int bounce = 0;; ++bounce) {
-        Hit& hit = *current;
-        hit = Hit{};
-        const Hit& previous = *last;
-        if (!world.intersect(ray, kInf, hit)) {
-            const Vec3 dir = normalize(ray.direction);
-            const Rgb sky = world.escaped(dir);
-            if (specular || !world.environment || !world.environment->worth_sampling_in_paths()) {
-                radiance += throughput * sky;
-            } else {
-                radiance += throughput * sky *
-                            power_heuristic(bsdf_pdf, world.environment->pdf(previous, dir, nullptr));
-            }
-            break;
-        }
-        const Material& material = world.material(hit);
-        throughput *= segment_transmittance(material, hit, ray);
-        const Vec3 wo = normalize(-ray.direction);
+// Both inlined into radiance's and radiances' loops: one loop, as before the two were split, with no
+// call per bounce.
+__attribute__((always_inline)) inline void PathIntegrator::trace(const World& world, Path& path) const {
+    *path.current = Hit{};
+    path.found = world.intersect(path.ray, kInf, *path.current);
+}
 
-        const Rgb emitted = material.emitted(hit, wo);
-        if (!emitted.is_black()) {
-            const std::int32_t light_index = world.light_index_of(hit);
-            if (specular || light_index < 0) {
-                radiance += throughput * emitted;
-            } else {
-                const auto index = static_cast<std::size_t>(light_index);
-                const double light_pdf = light_pdf_of(world, index, previous, -wo, &hit);
-                radiance += throughput * emitted * power_heuristic(bsdf_pdf, light_pdf);
-            }
+__attribute__((always_inline)) inline bool PathIntegrator::shade(const World& world, Path& path,
+                                                                 RayCounters& rays) const {
+    Rgb& radiance = path.radiance;
+    Rgb& throughput = path.throughput;
+    const Ray& ray = path.ray;
+    SampleStream& samples = *path.samples;
+    Hit& hit = *path.current;
+    const Hit& previous = *path.last;
+    if (!path.found) {
+        const Vec3 dir = normalize(ray.direction);
+        const Rgb sky = world.escaped(dir);
+        if (path.specular || !world.environment || !world.environment->worth_sampling_in_paths()) {
+            radiance += throughput * sky;
+        } else {
+            radiance += throughput * sky *
+                        power_heuristic(path.bsdf_pdf, world.environment->pdf(previous, dir, nullptr));
         }
-        if (bounce >= max_depth_) {
-            break;
-        }
-
-        const Bsdf bsdf = material.bsdf(hit);  // the textures, looked up once for all that follows
-        // wo in the shading frame, turned once for the light samples' f and pdf and the BSDF sample.
-        const Vec3 wo_local = bsdf.frame().to_local(wo);
-
-        // Next-event estimation: one sample of each light worth sampling (see
-        // Light::worth_sampling_in_paths).
-        // From here on the hit faces wo, as Light::sample expects (the cosines below take |·|, and the
-        // BSDF has its frame already).
-        hit.shading_normal = face_forward(hit.shading_normal, wo);
-        const Hit& at = hit;
-        for (std::size_t index = 0; index < world.lights.size(); ++index) {
-            const Light& light = *world.lights[index];
-            if (!light.physical() || !light.worth_sampling_in_paths()) {
-                continue;
-            }
-            const Point2 u = samples.next_2d();
-            const std::optional<LightSample> ls = light_sample_of(world, index, at, u);
-            if (!ls || ls->radiance.is_black() || ls->pdf <= 0) {
-                continue;
-            }
-            const Vec3 wi_local = bsdf.frame().to_local(ls->wi);
-            const Rgb f = bsdf.evaluate_local(wo_local, wi_local);
-            const double cos_theta = std::abs(dot(at.shading_normal, ls->wi));
-            if (f.is_black() || cos_theta == 0) {
-                continue;
-            }
-            const double weight =
-                ls->delta ? 1.0 : power_heuristic(ls->pdf, bsdf.pdf_local(wo_local, wi_local));
-            if (weight > 0 && !shadowed(world, at, *ls, rays)) {
-                radiance += throughput * f * ls->radiance * (cos_theta * weight / ls->pdf);
-            }
-        }
-
-        // Continue the path by sampling the BSDF.
-        const std::optional<BsdfSample> s = bsdf.sample_from_local(wo_local, samples.next_2d());
-        if (!s || s->pdf <= 0 || s->f.is_black()) {
-            break;
-        }
-        throughput *= s->f * (std::abs(dot(hit.shading_normal, s->wi)) / s->pdf);
-        specular = s->delta;
-        bsdf_pdf = s->pdf;
-        std::swap(last, current);
-
-        if (bounce + 1 >= kRouletteStart) {
-            // Drawn whatever the survival, so that each bounce reads the same sample dimensions.
-            const double survival = std::min(1.0, throughput.max_component() / kRouletteThroughput);
-            if (samples.next_1d() >= survival) {
-                break;
-            }
-            throughput = throughput / survival;
-        }
-        ++rays.secondary;
-        ray = spawn_ray(hit, s->wi);
+        return false;
     }
-    return radiance;
+    const Material& material = world.material(hit);
+    throughput *= segment_transmittance(material, hit, ray);
+    const Vec3 wo = normalize(-ray.direction);
+
+    const Rgb emitted = material.emitted(hit, wo);
+    if (!emitted.is_black()) {
+        const std::int32_t light_index = world.light_index_of(hit);
+        if (path.specular || light_index < 0) {
+            radiance += throughput * emitted;
+        } else {
+            const auto index = static_cast<std::size_t>(light_index);
+            const double light_pdf = light_pdf_of(world, index, previous, -wo, &hit);
+            radiance += throughput * emitted * power_heuristic(path.bsdf_pdf, light_pdf);
+        }
+    }
+    if (path.bounce >= max_depth_) {
+        return false;
+    }
+
+    const Bsdf bsdf = material.bsdf(hit);  // the textures, looked up once for all that follows
+    // wo in the shading frame, turned once for the light samples' f and pdf and the BSDF sample.
+    const Vec3 wo_local = bsdf.frame().to_local(wo);
+
+    // Next-event estimation: one sample of each light worth sampling (see
+    // Light::worth_sampling_in_paths).
+    // From here on the hit faces wo, as Light::sample expects (the cosines below take |·|, and the
+    // BSDF has its frame already).
+    hit.shading_normal = face_forward(hit.shading_normal, wo);
+    const Hit& at = hit;
+    for (std::size_t index = 0; index < world.lights.size(); ++index) {
+        const Light& light = *world.lights[index];
+        if (!light.physical() || !light.worth_sampling_in_paths()) {
+            continue;
+        }
+        const Point2 u = samples.next_2d();
+        const std::optional<LightSample> ls = light_sample_of(world, index, at, u);
+        if (!ls || ls->radiance.is_black() || ls->pdf <= 0) {
+            continue;
+        }
+        const Vec3 wi_local = bsdf.frame().to_local(ls->wi);
+        const Rgb f = bsdf.evaluate_local(wo_local, wi_local);
+        const double cos_theta = std::abs(dot(at.shading_normal, ls->wi));
+        if (f.is_black() || cos_theta == 0) {
+            continue;
+        }
+        const double weight = ls->delta ? 1.0 : power_heuristic(ls->pdf, bsdf.pdf_local(wo_local, wi_local));
+        if (weight > 0 && !shadowed(world, at, *ls, rays)) {
+            radiance += throughput * f * ls->radiance * (cos_theta * weight / ls->pdf);
+        }
+    }
+
+    // Continue the path by sampling the BSDF.
+    const std::optional<BsdfSample> s = bsdf.sample_from_local(wo_local, samples.next_2d());
+    if (!s || s->pdf <= 0 || s->f.is_black()) {
+        return false;
+    }
+    throughput *= s->f * (std::abs(dot(hit.shading_normal, s->wi)) / s->pdf);
+    path.specular = s->delta;
+    path.bsdf_pdf = s->pdf;
+    std::swap(path.last, path.current);
+
+    if (path.bounce + 1 >= kRouletteStart) {
+        // Drawn whatever the survival, so that each bounce reads the same sample dimensions.
+        const double survival = std::min(1.0, throughput.max_component() / kRouletteThroughput);
+        if (samples.next_1d() >= survival) {
+            return false;
+        }
+        throughput = throughput / survival;
+    }
+    ++rays.secondary;
+    path.ray = spawn_ray(hit, s->wi);
+    ++path.bounce;
+    return true;
+}
+
+Rgb PathIntegrator::radiance(const World& world, const Ray& camera_ray, SampleStream& samples,
+                             RayCounters& rays) const {
+    ++rays.camera;
+    Path path(camera_ray, samples);
+    do {
+        trace(world, path);
+    } while (shade(world, path, rays));
+    return path.radiance;
+}
+
+void PathIntegrator::radiances(const World& world, std::span<const Ray> camera_rays,
+                               std::span<SampleStream> streams, RayCounters& rays, std::span<Rgb> out) const {
+    // Paths a few at a time, on the stack (a render loop's pass has at most 16 samples a pixel).
+    constexpr std::size_t kTogether = 16;
+    for (std::size_t start = 0; start < camera_rays.size(); start += kTogether) {
+        const std::size_t count = std::min(kTogether, camera_rays.size() - start);
+        FixedVector<Path, kTogether> paths;
+        for (std::size_t i = 0; i < count; ++i) {
+            ++rays.camera;
+            trace(world, paths.emplace_back(camera_rays[start + i], streams[start + i]));
+        }
+        for (std::size_t i = 0; i < count; ++i) {
+            Path& path = paths[i];
+            while (shade(world, path, rays)) {
+                trace(world, path);
+            }
+            out[start + i] = path.radiance;
+        }
+    }
 }
 
 }  // namespace glint

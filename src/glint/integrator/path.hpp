@@ -22,6 +22,13 @@ class PathIntegrator final : public Integrator {
     explicit PathIntegrator(int max_depth, bool learn_light_visibility = true)
         : max_depth_(max_depth), learn_light_visibility_(learn_light_visibility) {}
     Rgb radiance(const World& world, const Ray& ray, SampleStream& samples, RayCounters& rays) const override;
+    // All the camera rays first, one after the other, then each path on from its first hit. Rays of one
+    // pixel take nearly the same way through the scene's BVH, so that the later ones find the branches
+    // of that way predicted and their nodes in cache, and their latencies overlap; the paths' later
+    // bounces go every way, and interleaving those (two paths in lockstep) made the Cornell boxes
+    // slower. RTIOW's final scene renders in 0.94 of the time (bench/ab.py; docs/benchmarks.md).
+    void radiances(const World& world, std::span<const Ray> camera_rays, std::span<SampleStream> streams,
+                   RayCounters& rays, std::span<Rgb> out) const override;
     // A copy that samples the sphere lights with what LightVisibility learns of this view; nullptr
     // when learning is off or finds nothing to favour.
     std::unique_ptr<Integrator> prepared(const World& world, const Camera& camera,
@@ -30,6 +37,12 @@ class PathIntegrator final : public Integrator {
     const LightVisibility* light_visibility() const { return visibility_.get(); }
 
   private:
+    // One path's state from bounce to bounce (path.cpp).
+    struct Path;
+    // The nearest hit of the path's ray, into its current Hit.
+    void trace(const World& world, Path& path) const;
+    // What the path's current hit adds to its radiance, and its next ray: false when the path ends.
+    bool shade(const World& world, Path& path, RayCounters& rays) const;
     // Light::sample and Light::pdf of world.lights[index], with what was learnt of it.
     std::optional<LightSample> light_sample_of(const World& world, std::size_t index, const Hit& at,
                                                Point2 u) const;

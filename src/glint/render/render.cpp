@@ -7,6 +7,7 @@
 #include <mutex>
 #include <optional>
 
+#include "glint/core/fixed_vector.hpp"
 #include "glint/render/progressive.hpp"
 
 namespace glint {
@@ -33,6 +34,18 @@ Rgb render_sample(const World& world, const View& view, const Integrator& integr
     return render_sample(world, view, integrator, x, y, key, camera_points(view, key), rays);
 }
 
+namespace {
+// A sample's radiance as the film takes it: scaled down to the settings' clamp, if any.
+Rgb clamped(const View& view, const Rgb& radiance) {
+    const double clamp = view.settings.clamp;
+    const double peak = std::max({radiance.r, radiance.g, radiance.b});
+    if (clamp > 0 && peak > clamp) {  // NaN peaks fail the test and reach the film's non-finite count
+        return radiance * (clamp / peak);
+    }
+    return radiance;
+}
+}  // namespace
+
 Rgb render_sample(const World& world, const View& view, const Integrator& integrator, int x, int y,
                   const SampleHashes& key, const FilmAndLens& points, RayCounters& rays) {
     const std::optional<Ray> ray = camera_ray(view, points, x, y);
@@ -40,13 +53,37 @@ Rgb render_sample(const World& world, const View& view, const Integrator& integr
         return Rgb{};  // outside the camera's image (a fisheye's corners): black, nothing traced
     }
     SampleStream stream(*view.sampler, key, kFirstIntegratorDimension);
-    const Rgb radiance = integrator.radiance(world, *ray, stream, rays);
-    const double clamp = view.settings.clamp;
-    const double peak = std::max({radiance.r, radiance.g, radiance.b});
-    if (clamp > 0 && peak > clamp) {  // NaN peaks fail the test and reach the film's non-finite count
-        return radiance * (clamp / peak);
+    return clamped(view, integrator.radiance(world, *ray, stream, rays));
+}
+
+void render_samples(const World& world, const View& view, const Integrator& integrator, int x, int y,
+                    const PixelHashes& pixel, std::uint32_t first, std::span<const FilmAndLens> points,
+                    RayCounters& rays, std::span<Rgb> out) {
+    // A pass's samples, a few at a time (a pass has at most 16 a pixel). Samples whose camera sees
+    // nothing are black and left out of the integrator's call, as render_sample leaves them.
+    constexpr std::size_t kTogether = 16;
+    for (std::size_t start = 0; start < points.size(); start += kTogether) {
+        const std::size_t count = std::min(kTogether, points.size() - start);
+        FixedVector<Ray, kTogether> camera_rays;
+        FixedVector<SampleStream, kTogether> streams;
+        FixedVector<std::size_t, kTogether> sample_of;  // the sample (index into out) of each traced ray
+        FixedVector<Rgb, kTogether> radiances;
+        for (std::size_t i = start; i < start + count; ++i) {
+            out[i] = Rgb{};
+            if (const std::optional<Ray> ray = camera_ray(view, points[i], x, y)) {
+                camera_rays.emplace_back(*ray);
+                streams.emplace_back(*view.sampler,
+                                     SampleHashes(pixel, first + static_cast<std::uint32_t>(i)),
+                                     kFirstIntegratorDimension);
+                sample_of.emplace_back(i);
+                radiances.emplace_back();
+            }
+        }
+        integrator.radiances(world, camera_rays.span(), streams.span(), rays, radiances.span());
+        for (std::size_t j = 0; j < sample_of.size(); ++j) {
+            out[sample_of[j]] = clamped(view, radiances[j]);
+        }
     }
-    return radiance;
 }
 
 Rgb render_sample(const World& world, const View& view, const Integrator& integrator, int x, int y,

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <span>
 
 #include "glint/image/film.hpp"
 #include "glint/integrator/integrator.hpp"
@@ -77,5 +78,12 @@ Rgb render_sample(const World& world, const View& view, const Integrator& integr
 // Sampler::camera_points, which a loop over a pixel's samples draws together).
 Rgb render_sample(const World& world, const View& view, const Integrator& integrator, int x, int y,
                   const SampleHashes& key, const FilmAndLens& points, RayCounters& rays);
+// Samples first … first + n − 1 of pixel (x, y) at once, given the pixel's hashes and the samples'
+// camera points (Sampler::camera_points): out[i] is exactly what render_sample gives sample first + i,
+// but the camera rays go to the integrator together (Integrator::radiances). n = points.size() =
+// out.size().
+void render_samples(const World& world, const View& view, const Integrator& integrator, int x, int y,
+                    const PixelHashes& pixel, std::uint32_t first, std::span<const FilmAndLens> points,
+                    RayCounters& rays, std::span<Rgb> out);
 
 }  // namespace glint
