@@ -664,6 +664,75 @@ TEST(Bvh, ScalarTraversalGivesTheSameHitsAsAvx2) {
     expect_same_hits(list, bvh, rays_into(Bounds3{{-10, -10, -10}, {10, 10, 10}}, 2000, 6), ptrs);
 }
 
+// Flat axis-aligned rectangles far from the origin and from the rays' origins: their boxes are padded
+// slabs of zero thickness, whose near and far planes the node test crosses with separately rounded
+// terms (the far ones grown inside the fused multiply-subtract, TraversalRay::inv_far); the padding
+// must keep every such box the ray crosses. Rays nearly along the rectangles' normals, and along their
+// planes, scalar and AVX2.
+TEST(Bvh, FlatRectanglesFarAwayKeepEveryHit) {
+    for (const double offset : {1e3, 1e6}) {
+        std::vector<std::unique_ptr<Shape>> shapes;
+        for (int k = 0; k < 60; ++k) {
+            const double x = offset + 0.37 * k;
+            const double y = -offset + 1.1 * (k % 7);
+            const double z = 0.5 * offset + 0.9 * (k % 5);
+            const Vec3 corner{x, y, z};
+            switch (k % 3) {  // normal along x, y or z
+                case 0:
+                    shapes.push_back(std::make_unique<Rectangle>(corner, Vec3{0, 1, 0}, Vec3{0, 0, 1}));
+                    break;
+                case 1:
+                    shapes.push_back(std::make_unique<Rectangle>(corner, Vec3{0, 0, 1}, Vec3{1, 0, 0}));
+                    break;
+                default:
+                    shapes.push_back(std::make_unique<Rectangle>(corner, Vec3{1, 0, 0}, Vec3{0, 1, 0}));
+                    break;
+            }
+        }
+        const auto ptrs = pointers(shapes);
+        const LinearAccelerator list(ptrs);
+        const BvhAccelerator bvh(ptrs);
+        ASSERT_EQ(bvh.flat_count(), 0u);  // all in the tree
+        std::mt19937_64 rng(5);
+        std::uniform_real_distribution<double> unit(0, 1);
+        std::vector<Ray> rays;
+        for (int r = 0; r < 6000; ++r) {
+            const auto& target = *static_cast<const Rectangle*>(ptrs[r % ptrs.size()]);
+            // A point of the rectangle, and a ray to it from far away, nearly along its normal, or
+            // from the side, nearly in its plane.
+            const double a = unit(rng), b = unit(rng);
+            Vec3 edge1, edge2;
+            switch (r % ptrs.size() % 3) {
+                case 0:
+                    edge1 = {0, 1, 0};
+                    edge2 = {0, 0, 1};
+                    break;
+                case 1:
+                    edge1 = {0, 0, 1};
+                    edge2 = {1, 0, 0};
+                    break;
+                default:
+                    edge1 = {1, 0, 0};
+                    edge2 = {0, 1, 0};
+                    break;
+            }
+            const Vec3 on = target.corner() + a * edge1 + b * edge2;
+            const Vec3 normal = cross(edge1, edge2);
+            const Vec3 wobble{unit(rng) - 0.5, unit(rng) - 0.5, unit(rng) - 0.5};
+            const Vec3 direction = r % 4 == 3 ? normalize(edge1 + 1e-3 * normal + 1e-3 * wobble)
+                                              : normalize((r % 2 == 0 ? 1.0 : -1.0) * normal + 0.2 * wobble);
+            const double distance = r % 8 == 0 ? 2 * offset : 30;
+            rays.push_back({on - distance * direction, direction});
+        }
+        for (const bool scalar : {false, true}) {
+            SCOPED_TRACE(scalar ? "scalar" : "avx2");
+            WideBvh::force_scalar_traversal(scalar);
+            expect_same_hits(list, bvh, rays, ptrs);
+        }
+        WideBvh::force_scalar_traversal(false);
+    }
+}
+
 // Axis-aligned rays (a zero direction component: its inverse is a large stand-in) onto meshes and
 // spheres far from the origin. Coordinate times stand-in overflowed float beyond 3.4e8, and the AVX2
 // path (fused multiply-subtract) then culled boxes the ray was inside: these rays all missed.

@@ -102,7 +102,8 @@ TEST(ProgressiveRender, SamplesTakenTogetherAreEachRenderSamplesBits) {
             "background: [0.2, 0.3, 0.4]\n");
         ProgressiveRender progressive(*scene.world, scene.view);
         const Integrator& traced = progressive.integrator();
-        int black = 0;
+        int mixed_pixels = 0;  // pixels with samples both traced and left black (no camera ray)
+        int clamped = 0;       // samples scaled down to the clamp
         for (const std::uint32_t count : {1u, 2u, 7u, 16u, 20u}) {
             for (const std::uint32_t first : {0u, 3u}) {
                 for (int y = 0; y < 6; ++y) {
@@ -114,11 +115,13 @@ TEST(ProgressiveRender, SamplesTakenTogetherAreEachRenderSamplesBits) {
                         std::vector<FilmAndLens> points(count);
                         scene.view.sampler->camera_points(pixel, first, scene.view.camera->uses_lens(),
                                                           points);
-                        std::vector<Rgb> together(count);
+                        // NaN, so that a sample render_samples leaves unwritten fails.
+                        std::vector<Rgb> together(count, Rgb(std::numeric_limits<double>::quiet_NaN()));
                         RayCounters rays_together;
                         render_samples(*scene.world, scene.view, traced, x, y, pixel, first, points,
                                        rays_together, together);
                         RayCounters rays_alone;
+                        int unseen = 0;
                         for (std::uint32_t i = 0; i < count; ++i) {
                             const Rgb alone =
                                 render_sample(*scene.world, scene.view, traced, x, y, first + i, rays_alone);
@@ -128,8 +131,10 @@ TEST(ProgressiveRender, SamplesTakenTogetherAreEachRenderSamplesBits) {
                                 << integrator << " " << x << ", " << y << ", " << i;
                             ASSERT_EQ(together[i].b, alone.b)
                                 << integrator << " " << x << ", " << y << ", " << i;
-                            black += alone.is_black() ? 1 : 0;
+                            unseen += camera_ray(scene.view, points[i], x, y) ? 0 : 1;
+                            clamped += alone.max_component() == 0.5 ? 1 : 0;
                         }
+                        mixed_pixels += unseen > 0 && unseen < static_cast<int>(count) ? 1 : 0;
                         ASSERT_EQ(rays_together.camera, rays_alone.camera);
                         ASSERT_EQ(rays_together.shadow, rays_alone.shadow);
                         ASSERT_EQ(rays_together.secondary, rays_alone.secondary);
@@ -137,7 +142,35 @@ TEST(ProgressiveRender, SamplesTakenTogetherAreEachRenderSamplesBits) {
                 }
             }
         }
-        EXPECT_GT(black, 0) << integrator;  // the fisheye's corners
+        EXPECT_GT(mixed_pixels, 0) << integrator;  // at the fisheye's edge
+        EXPECT_GT(clamped, 0) << integrator;
+    }
+    // More camera rays than the path tracer takes together (16): each still gets radiance()'s bits.
+    const Scene scene = test::scene_from_text(
+        "render: {width: 4, height: 4, samples: 4, integrator: path}\n"
+        "camera: {type: pinhole, eye: [0, 1, 5], look_at: [0, 0.5, 0], fov: 40}\n"
+        "objects:\n"
+        "  - {type: sphere, center: [0, 0.5, 0], radius: 0.5, material: {type: matte, albedo: 0.6}}\n"
+        "  - {type: plane, point: [0, 0, 0], normal: [0, 1, 0], material: {type: matte, albedo: 0.5}}\n"
+        "lights:\n  - {type: point, position: [1, 3, 2], intensity: 20}\n"
+        "background: [0.2, 0.3, 0.4]\n");
+    std::vector<Ray> camera_rays;
+    std::vector<SampleStream> streams;
+    for (std::uint32_t i = 0; i < 20; ++i) {
+        const SampleHashes key(SampleHashes::pixel_hash(1, 2, 1), i);
+        camera_rays.push_back(*camera_ray(scene.view, key, 2, 1));
+        streams.emplace_back(*scene.view.sampler, key, kFirstIntegratorDimension);
+    }
+    std::vector<Rgb> together(20);
+    RayCounters rays;
+    scene.view.integrator->radiances(*scene.world, camera_rays, streams, rays, together);
+    for (std::uint32_t i = 0; i < 20; ++i) {
+        SampleStream stream(*scene.view.sampler, SampleHashes(SampleHashes::pixel_hash(1, 2, 1), i),
+                            kFirstIntegratorDimension);
+        const Rgb alone = scene.view.integrator->radiance(*scene.world, camera_rays[i], stream, rays);
+        EXPECT_EQ(together[i].r, alone.r) << i;
+        EXPECT_EQ(together[i].g, alone.g) << i;
+        EXPECT_EQ(together[i].b, alone.b) << i;
     }
 }
 

@@ -645,7 +645,8 @@ class Builder {
     }
 
     // The child's box, padded by a relative 2^-20 so that the float slab arithmetic of traversal never
-    // culls a box the ray touches.
+    // culls a box the ray touches (a flat box's near and far crossings are rounded apart: see
+    // WideBvh::TraversalRay::inv_far).
     static void set_child_box(WideBvhNode& node, int c, const Box& box) {
         const Box::Corners b = box.corners();
         double magnitude = 0;

@@ -209,9 +209,13 @@ struct WideBvh::TraversalRay {
     // passes; t = plane · inv − origin · inv.
     float inv[3];
     float origin_inv[3];
-    // The same, grown by kFarGrowth, for the far planes: t_far = plane · inv_far − origin_inv_far is
-    // the far distance pushed out by kFarGrowth, in one fused multiply–subtract rather than a multiply
+    // The same, grown by kFarGrowth, for the far planes: plane · inv_far − origin_inv_far is where the
+    // ray leaves a slab, pushed out by kFarGrowth, in one fused multiply–subtract rather than a multiply
     // after it (one step fewer on the chain of dependent operations from a node's load to its test).
+    // A slab's near and far crossings are then rounded apart, not from the same terms: for a flat box
+    // (a quad's) the near one may come out past the far one, and what keeps such a box is its padding
+    // (set_child_box in wide_bvh.cpp, 2^-20 of its largest coordinate), several times that rounding
+    // (test Bvh.FlatRectanglesFarAwayKeepEveryHit fails without the padding).
     float inv_far[3];
     float origin_inv_far[3];
     int near_offset[3];  // offset of the near plane's array (lo or hi) within a node, per axis
@@ -319,12 +323,12 @@ __attribute__((target("avx2,fma"))) inline __m256 bvh_detail::crossings(const Wi
 
 __attribute__((target("avx2,fma"))) inline unsigned bvh_detail::Avx2NodeTest::hits(
     const WideBvhNode& node, const WideBvh::TraversalRay& r, float t_far, float* t_near_out) {
-    const __m256 t_near_x = crossings(node, r.near_offset[0], r.inv[0], r.origin_inv[0]);
-    const __m256 t_near_y = crossings(node, r.near_offset[1], r.inv[1], r.origin_inv[1]);
-    const __m256 t_near_z = crossings(node, r.near_offset[2], r.inv[2], r.origin_inv[2]);
-    const __m256 t_far_x = crossings(node, r.far_offset[0], r.inv_far[0], r.origin_inv_far[0]);
-    const __m256 t_far_y = crossings(node, r.far_offset[1], r.inv_far[1], r.origin_inv_far[1]);
-    const __m256 t_far_z = crossings(node, r.far_offset[2], r.inv_far[2], r.origin_inv_far[2]);
+    const __m256 near_x = crossings(node, r.near_offset[0], r.inv[0], r.origin_inv[0]);
+    const __m256 near_y = crossings(node, r.near_offset[1], r.inv[1], r.origin_inv[1]);
+    const __m256 near_z = crossings(node, r.near_offset[2], r.inv[2], r.origin_inv[2]);
+    const __m256 far_x = crossings(node, r.far_offset[0], r.inv_far[0], r.origin_inv_far[0]);
+    const __m256 far_y = crossings(node, r.far_offset[1], r.inv_far[1], r.origin_inv_far[1]);
+    const __m256 far_z = crossings(node, r.far_offset[2], r.inv_far[2], r.origin_inv_far[2]);
     // Two levels of max and of min, not a chain of three: the test is on the chain of dependent
     // operations from a node's load to the next node's (RTIOW's final scene: 0.991 of the time).
     // _mm256_max_ps(a, b) returns b when either is NaN, so a slab that cannot be evaluated never culls,
@@ -332,9 +336,8 @@ __attribute__((target("avx2,fma"))) inline unsigned bvh_detail::Avx2NodeTest::hi
     // NaN, and the outer one then keeps the x term with 0 (or t_far), dropping y too (a box kept
     // that the scalar test might cull: more tests, the same hits).
     const __m256 t0 =
-        _mm256_max_ps(_mm256_max_ps(t_near_y, t_near_z), _mm256_max_ps(t_near_x, _mm256_setzero_ps()));
-    const __m256 t1 =
-        _mm256_min_ps(_mm256_min_ps(t_far_y, t_far_z), _mm256_min_ps(t_far_x, _mm256_set1_ps(t_far)));
+        _mm256_max_ps(_mm256_max_ps(near_y, near_z), _mm256_max_ps(near_x, _mm256_setzero_ps()));
+    const __m256 t1 = _mm256_min_ps(_mm256_min_ps(far_y, far_z), _mm256_min_ps(far_x, _mm256_set1_ps(t_far)));
     _mm256_storeu_ps(t_near_out, t0);
     return static_cast<unsigned>(_mm256_movemask_ps(_mm256_cmp_ps(t0, t1, _CMP_LE_OQ)));
 }

@@ -1,6 +1,7 @@
 // Integrators: the radiance arriving along a camera ray.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <memory>

@@ -26,7 +26,7 @@ class PathIntegrator final : public Integrator {
     // pixel take nearly the same way through the scene's BVH, so that the later ones find the branches
     // of that way predicted and their nodes in cache, and their latencies overlap; the paths' later
     // bounces go every way, and interleaving those (two paths in lockstep) made the Cornell boxes
-    // slower. RTIOW's final scene renders in 0.94 of the time (bench/ab.py; docs/benchmarks.md).
+    // slower. RTIOW's final scene renders in 0.945 of the time (bench/ab.py; docs/benchmarks.md).
     void radiances(const World& world, std::span<const Ray> camera_rays, std::span<SampleStream> streams,
                    RayCounters& rays, std::span<Rgb> out) const override;
     // A copy that samples the sphere lights with what LightVisibility learns of this view; nullptr

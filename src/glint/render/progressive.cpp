@@ -6,7 +6,6 @@
 #include <array>
 #include <atomic>
 #include <chrono>
-#include <optional>
 #include <span>
 #include <stdexcept>
 
@@ -112,7 +111,7 @@ bool ProgressiveRender::next_pass(const CancelCheck& cancelled, const TileDone& 
                 // A pass of several samples also draws its samples' camera points together (sobol:
                 // eight at a time in AVX2 lanes): RTIOW's final scene at 32 spp renders in 0.96–0.97
                 // of the time (bench/ab.py), and hands their camera rays to the integrator together
-                // (render_samples; 0.94 of the time again).
+                // (render_samples; 0.945 of the time again).
                 FixedVector<Rgb, kMaxPassSamples> radiances;
                 for (std::uint32_t s = 0; s < count; ++s) {
                     radiances.emplace_back();

@@ -3,6 +3,7 @@
 #include <tbb/global_control.h>
 
 #include <algorithm>
+#include <cassert>
 #include <chrono>
 #include <mutex>
 #include <optional>
@@ -59,6 +60,7 @@ Rgb render_sample(const World& world, const View& view, const Integrator& integr
 void render_samples(const World& world, const View& view, const Integrator& integrator, int x, int y,
                     const PixelHashes& pixel, std::uint32_t first, std::span<const FilmAndLens> points,
                     RayCounters& rays, std::span<Rgb> out) {
+    assert(out.size() == points.size());
     // A pass's samples, a few at a time (a pass has at most 16 a pixel). Samples whose camera sees
     // nothing are black and left out of the integrator's call, as render_sample leaves them.
     constexpr std::size_t kTogether = 16;
