@@ -19,6 +19,26 @@ TEST(Vec3, DotCrossAndLength) {
     EXPECT_NEAR(length(normalize(Vec3(-2, 7, 0.5))), 1.0, 1e-15);
 }
 
+TEST(Vec3, NormalizeNearUnitIsNormalizeToTheLastBits) {
+    // Vectors off unit length by up to ±2^-28 (inside the Newton step's range) and by more (normalize's).
+    for (std::uint32_t i = 0; i < 20000; ++i) {
+        const SampleKey key{5, i, 0, 0};
+        const Vec3 direction =
+            normalize(Vec3{key.uniform(0) - 0.5, key.uniform(1) - 0.5, key.uniform(2) - 0.5});
+        const double off = i % 2 == 0 ? (key.uniform(3) - 0.5) * 0x1p-27 : (key.uniform(3) - 0.5) * 4;
+        const Vec3 v = direction * (1 + off);
+        const Vec3 n = normalize_near_unit(v);
+        EXPECT_NEAR(length(n), 1.0, 0x1p-51) << i;
+        const Vec3 exact = normalize(v);
+        for (int a = 0; a < 3; ++a) {
+            EXPECT_NEAR(n[a], exact[a], 0x1p-51) << i;
+        }
+        if (i % 2 == 1 && std::abs(off) * 2 > 0x1p-27) {
+            EXPECT_EQ(n, exact) << "far from unit: normalize's own result " << i;
+        }
+    }
+}
+
 TEST(Vec3, ReflectIsPaperEquation16) {
     // R = I − 2 (I·N) N: a ray going down at 45° bounces up at 45°.
     const Vec3 r = reflect(normalize(Vec3(1, -1, 0)), Vec3(0, 1, 0));

@@ -124,6 +124,35 @@ TEST(Sphere, RandomHitsLieOnTheSphereAndLeavingRaysDoNotRehit) {
     }
 }
 
+TEST(Sphere, FillHitProjectsAnInexactTOntoTheSphere) {
+    // fill_hit's normal comes from the radius vector over the radius, which is unit only as far as t is
+    // exact: given t's off by 1e-9 (inside normalize_near_unit's Newton step) and by 1e-3 (outside it),
+    // in rays head-on and grazing, its normal is unit and its point on the sphere all the same.
+    for (double scale : {1e-3, 1.0, 1e3, 1e5}) {
+        const Vec3 center = Vec3{0.3, -0.7, 2.0} * scale;
+        const Sphere s(center, scale);
+        for (std::uint32_t i = 0; i < 2000; ++i) {
+            const SampleKey key{12, i, 0, 0};
+            const double miss_by = std::ldexp(key.uniform(0), -static_cast<int>(i % 40));  // 1 to 2^-40
+            const double angle = 2 * kPi * key.uniform(1);
+            const Vec3 side{std::cos(angle), std::sin(angle), 0};
+            const Vec3 origin = center + (side * (1 - miss_by) + Vec3{0, 0, 3}) * scale;
+            const Ray ray{origin, Vec3{key.uniform(2) * 1e-3, 0, -1}};
+            Hit hit;
+            if (!s.intersect(ray, kInf, hit)) {
+                continue;
+            }
+            for (double error : {0.0, 1e-9, -1e-9, 1e-3}) {
+                Hit inexact;
+                s.fill_hit(ray, hit.t * (1 + error), inexact);
+                EXPECT_NEAR(length(inexact.normal), 1.0, 1e-15) << scale << " " << i << " " << error;
+                EXPECT_NEAR(length(inexact.point - center), scale, 1e-15 * scale) << scale << " " << i;
+                EXPECT_EQ(inexact.normal, inexact.shading_normal);
+            }
+        }
+    }
+}
+
 TEST(Sphere, AreaSamplesLieOnTheSurfaceWithUniformDensity) {
     const Sphere s({1, 2, 3}, 2);
     Vec3 mean;

@@ -24,7 +24,8 @@ bool Sphere::intersect(const Ray& ray, double t_max, Hit& hit) const {
 void Sphere::fill_hit(const Ray& ray, double t, Hit& hit) const {
     // Project the point back onto the sphere: its error is then a few ulps of |C| + R whatever t was.
     const Vec3 from_center = ray.at(t) - center_;
-    const Vec3 normal = from_center / length(from_center);
+    // from_center / R is a unit vector to within t's rounding: normalized without a division.
+    const Vec3 normal = normalize_near_unit(from_center * inverse_radius_);
     hit.t = t;
     hit.point = center_ + normal * radius_;
     hit.normal = normal;

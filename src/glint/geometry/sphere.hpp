@@ -68,7 +68,8 @@ inline bool sphere_occludes(const Vec3& center, double radius, const Ray& ray, d
 
 class Sphere final : public Shape {
   public:
-    Sphere(const Vec3& center, double radius) : center_(center), radius_(radius) {}
+    Sphere(const Vec3& center, double radius)
+        : center_(center), radius_(radius), inverse_radius_(1 / radius) {}
     Bounds3 bounds() const override;
     bool intersect(const Ray& ray, double t_max, Hit& hit) const override;
     bool occluded(const Ray& ray, double t_max) const override;
@@ -99,6 +100,7 @@ class Sphere final : public Shape {
 
     Vec3 center_;
     double radius_;
+    double inverse_radius_;  // for fill_hit's normal, without a division
 };
 
 }  // namespace glint
