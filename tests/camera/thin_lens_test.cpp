@@ -2,9 +2,13 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstring>
+#include <span>
 #include <vector>
 
 #include "camera/camera_test_util.hpp"
+#include "glint/core/hash.hpp"
 #include "glint/image/image_io.hpp"
 #include "glint/params/diagnostics.hpp"
 
@@ -70,6 +74,40 @@ TEST(ThinLens, NearPlaneStartsRaysOnItAndKeepsTheFocus) {
             EXPECT_LT(length(from_near.direction - from_lens.direction), 1e-15);
             EXPECT_LT(length(at_depth(from_near, eye, forward, 4) - at_depth(from_lens, eye, forward, 4)),
                       1e-12);
+        }
+    }
+}
+
+TEST(ThinLens, RaysTogetherAreOneByOnesRays) {
+    // generate_rays makes four rays at a time in AVX2 lanes (where the CPU has them), the rest one by one:
+    // each ray must be generate_ray's to the bit. Lens points: a grid with the edges, the centre (where
+    // the concentric map divides 0 by 0), the diagonals |a| = |b| and the axes a = 0, b = 0 on it, and
+    // random points; counts 0 to 13, so that every tail length follows the groups of four.
+    std::vector<Point2> lens = lens_grid(9);
+    std::vector<Point2> film;
+    for (std::uint32_t i = 0; i < 200; ++i) {
+        const SampleKey key{21, i, 0, 0};
+        lens.push_back({key.uniform(0), key.uniform(1)});
+    }
+    for (std::size_t i = 0; i < lens.size(); ++i) {
+        film.push_back({200 * std::fmod(0.37 * static_cast<double>(i), 1.0),
+                        100 * std::fmod(0.61 * static_cast<double>(i), 1.0)});
+    }
+    for (const std::string extra : {"", ", near: 1.5", ", near: 1.5, near_shape: sphere"}) {
+        const Scene scene = camera_scene("{type: thin-lens, " + kObliqueView +
+                                         ", lens_radius: 0.3, focus_distance: 4" + extra + "}");
+        const Camera& camera = *scene.view.camera;
+        for (std::size_t count = 0; count <= 13; ++count) {
+            for (std::size_t first = 0; first + count <= lens.size(); first += 7) {
+                std::vector<Ray> together(count);
+                camera.generate_rays(std::span(film).subspan(first, count),
+                                     std::span(lens).subspan(first, count), together);
+                for (std::size_t i = 0; i < count; ++i) {
+                    const Ray alone = camera.generate_ray(film[first + i], lens[first + i]);
+                    ASSERT_EQ(std::memcmp(&together[i], &alone, sizeof(Ray)), 0)
+                        << extra << ": sample " << first + i << " of a call of " << count;
+                }
+            }
         }
     }
 }

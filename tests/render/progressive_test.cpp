@@ -83,67 +83,79 @@ TEST(ProgressiveRender, SamplesTakenTogetherAreEachRenderSamplesBits) {
     // get, to the bit, what render_sample gives it alone, with the same rays counted: through a
     // fisheye whose corners see nothing (those samples are black and left out of the call), with the
     // firefly clamp, for 1 to 20 samples (beyond 16 the samples go in two calls) and from any first
-    // sample.
-    for (const char* integrator : {"path", "whitted", "raycast"}) {
-        const Scene scene = test::scene_from_text(
-            std::string(
-                "render: {width: 6, height: 6, samples: 4, sampler: sobol, clamp: 0.5, integrator: ") +
-            integrator +
-            "}\n"
-            "camera: {type: fisheye, eye: [0, 1, 5], look_at: [0, 0.5, 0], fov: 200}\n"
-            "objects:\n"
-            "  - {type: sphere, center: [0, 0.5, 0], radius: 0.5, material: {type: dielectric, ior: 1.5}}\n"
-            "  - {type: sphere, center: [1, 0.3, 0.5], radius: 0.3, material: {type: matte, albedo: [0.7, "
-            "0.5, 0.3]}}\n"
-            "  - {type: plane, point: [0, 0, 0], normal: [0, 1, 0], material: {type: matte, albedo: [0.5, "
-            "0.5, 0.5]}}\n"
-            "lights:\n  - {type: point, position: [1, 3, 2], intensity: 40}\n"
-            "  - {type: area, radiance: 5, shape: {type: sphere, center: [-1, 2, 1], radius: 0.3}}\n"
-            "background: [0.2, 0.3, 0.4]\n");
-        ProgressiveRender progressive(*scene.world, scene.view);
-        const Integrator& traced = progressive.integrator();
-        int mixed_pixels = 0;  // pixels with samples both traced and left black (no camera ray)
-        int clamped = 0;       // samples scaled down to the clamp
-        for (const std::uint32_t count : {1u, 2u, 7u, 16u, 20u}) {
-            for (const std::uint32_t first : {0u, 3u}) {
-                for (int y = 0; y < 6; ++y) {
-                    for (int x = 0; x < 6; ++x) {
-                        const std::uint64_t hash =
-                            SampleHashes::pixel_hash(scene.view.settings.seed, static_cast<std::uint32_t>(x),
-                                                     static_cast<std::uint32_t>(y));
-                        const PixelHashes pixel(hash);
-                        std::vector<FilmAndLens> points(count);
-                        scene.view.sampler->camera_points(pixel, first, scene.view.camera->uses_lens(),
-                                                          points);
-                        // NaN, so that a sample render_samples leaves unwritten fails.
-                        std::vector<Rgb> together(count, Rgb(std::numeric_limits<double>::quiet_NaN()));
-                        RayCounters rays_together;
-                        render_samples(*scene.world, scene.view, traced, x, y, pixel, first, points,
-                                       rays_together, together);
-                        RayCounters rays_alone;
-                        int unseen = 0;
-                        for (std::uint32_t i = 0; i < count; ++i) {
-                            const Rgb alone =
-                                render_sample(*scene.world, scene.view, traced, x, y, first + i, rays_alone);
-                            ASSERT_EQ(together[i].r, alone.r)
-                                << integrator << " " << x << ", " << y << ", " << i;
-                            ASSERT_EQ(together[i].g, alone.g)
-                                << integrator << " " << x << ", " << y << ", " << i;
-                            ASSERT_EQ(together[i].b, alone.b)
-                                << integrator << " " << x << ", " << y << ", " << i;
-                            unseen += camera_ray(scene.view, points[i], x, y) ? 0 : 1;
-                            clamped += alone.max_component() == 0.5 ? 1 : 0;
+    // sample. And through a thin lens, whose rays the camera makes four at a time.
+    const std::string fisheye = "{type: fisheye, eye: [0, 1, 5], look_at: [0, 0.5, 0], fov: 200}";
+    const std::string thin_lens =
+        "{type: thin-lens, eye: [0, 1, 5], look_at: [0, 0.5, 0], fov: 60, lens_radius: 0.2, near: 0.5}";
+    for (const std::string& camera : {fisheye, thin_lens}) {
+        for (const char* integrator : {"path", "whitted", "raycast"}) {
+            const Scene scene = test::scene_from_text(
+                std::string(
+                    "render: {width: 6, height: 6, samples: 4, sampler: sobol, clamp: 0.5, integrator: ") +
+                integrator +
+                "}\n"
+                "camera: " +
+                camera +
+                "\n"
+                "objects:\n"
+                "  - {type: sphere, center: [0, 0.5, 0], radius: 0.5, material: {type: dielectric, ior: "
+                "1.5}}\n"
+                "  - {type: sphere, center: [1, 0.3, 0.5], radius: 0.3, material: {type: matte, albedo: "
+                "[0.7, "
+                "0.5, 0.3]}}\n"
+                "  - {type: plane, point: [0, 0, 0], normal: [0, 1, 0], material: {type: matte, albedo: "
+                "[0.5, "
+                "0.5, 0.5]}}\n"
+                "lights:\n  - {type: point, position: [1, 3, 2], intensity: 40}\n"
+                "  - {type: area, radiance: 5, shape: {type: sphere, center: [-1, 2, 1], radius: 0.3}}\n"
+                "background: [0.2, 0.3, 0.4]\n");
+            ProgressiveRender progressive(*scene.world, scene.view);
+            const Integrator& traced = progressive.integrator();
+            int mixed_pixels = 0;  // pixels with samples both traced and left black (no camera ray)
+            int clamped = 0;       // samples scaled down to the clamp
+            for (const std::uint32_t count : {1u, 2u, 7u, 16u, 20u}) {
+                for (const std::uint32_t first : {0u, 3u}) {
+                    for (int y = 0; y < 6; ++y) {
+                        for (int x = 0; x < 6; ++x) {
+                            const std::uint64_t hash = SampleHashes::pixel_hash(
+                                scene.view.settings.seed, static_cast<std::uint32_t>(x),
+                                static_cast<std::uint32_t>(y));
+                            const PixelHashes pixel(hash);
+                            std::vector<FilmAndLens> points(count);
+                            scene.view.sampler->camera_points(pixel, first, scene.view.camera->uses_lens(),
+                                                              points);
+                            // NaN, so that a sample render_samples leaves unwritten fails.
+                            std::vector<Rgb> together(count, Rgb(std::numeric_limits<double>::quiet_NaN()));
+                            RayCounters rays_together;
+                            render_samples(*scene.world, scene.view, traced, x, y, pixel, first, points,
+                                           rays_together, together);
+                            RayCounters rays_alone;
+                            int unseen = 0;
+                            for (std::uint32_t i = 0; i < count; ++i) {
+                                const Rgb alone = render_sample(*scene.world, scene.view, traced, x, y,
+                                                                first + i, rays_alone);
+                                ASSERT_EQ(together[i].r, alone.r)
+                                    << integrator << " " << x << ", " << y << ", " << i;
+                                ASSERT_EQ(together[i].g, alone.g)
+                                    << integrator << " " << x << ", " << y << ", " << i;
+                                ASSERT_EQ(together[i].b, alone.b)
+                                    << integrator << " " << x << ", " << y << ", " << i;
+                                unseen += camera_ray(scene.view, points[i], x, y) ? 0 : 1;
+                                clamped += alone.max_component() == 0.5 ? 1 : 0;
+                            }
+                            mixed_pixels += unseen > 0 && unseen < static_cast<int>(count) ? 1 : 0;
+                            ASSERT_EQ(rays_together.camera, rays_alone.camera);
+                            ASSERT_EQ(rays_together.shadow, rays_alone.shadow);
+                            ASSERT_EQ(rays_together.secondary, rays_alone.secondary);
                         }
-                        mixed_pixels += unseen > 0 && unseen < static_cast<int>(count) ? 1 : 0;
-                        ASSERT_EQ(rays_together.camera, rays_alone.camera);
-                        ASSERT_EQ(rays_together.shadow, rays_alone.shadow);
-                        ASSERT_EQ(rays_together.secondary, rays_alone.secondary);
                     }
                 }
             }
+            if (camera == fisheye) {
+                EXPECT_GT(mixed_pixels, 0) << integrator;  // at the fisheye's edge
+            }
+            EXPECT_GT(clamped, 0) << integrator;
         }
-        EXPECT_GT(mixed_pixels, 0) << integrator;  // at the fisheye's edge
-        EXPECT_GT(clamped, 0) << integrator;
     }
     // More camera rays than the path tracer takes together (16): each still gets radiance()'s bits.
     const Scene scene = test::scene_from_text(

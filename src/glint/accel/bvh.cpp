@@ -5,6 +5,7 @@
 #include <limits>
 #include <type_traits>
 
+#include "glint/core/avx2_lanes.hpp"
 #include "glint/geometry/rectangle.hpp"
 #include "glint/geometry/sphere.hpp"
 
@@ -108,19 +109,8 @@ struct SphereLanes {
     unsigned other;   // lanes of other shapes (set by test_group)
 };
 
-// The lane arithmetic test_sphere_lanes spells out (lambdas would not be compiled for AVX2).
-__attribute__((target("avx2"))) inline __m256d add(__m256d p, __m256d q) {
-    return _mm256_add_pd(p, q);
-}
-__attribute__((target("avx2"))) inline __m256d sub(__m256d p, __m256d q) {
-    return _mm256_sub_pd(p, q);
-}
-__attribute__((target("avx2"))) inline __m256d mul(__m256d p, __m256d q) {
-    return _mm256_mul_pd(p, q);
-}
-__attribute__((target("avx2"))) inline __m256d load(const double* p) {
-    return _mm256_load_pd(p);
-}
+using namespace avx2;  // the lane arithmetic test_sphere_lanes spells out
+
 // dot(p, q) = p.x q.x + p.y q.y + p.z q.z, added left to right as vec.hpp does.
 __attribute__((target("avx2"))) inline __m256d dot3(__m256d px, __m256d py, __m256d pz, __m256d qx,
                                                     __m256d qy, __m256d qz) {

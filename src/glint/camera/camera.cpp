@@ -1,5 +1,7 @@
 #include "glint/camera/camera.hpp"
 
+#include <cassert>
+
 #include "glint/core/math.hpp"
 #include "glint/params/params.hpp"
 
@@ -10,6 +12,14 @@ bool parallel(const Vec3& up, const Vec3& w) {
     return length(cross(up, w)) <= 1e-9 * length(up);
 }
 }  // namespace
+
+void Camera::generate_rays(std::span<const Point2> film, std::span<const Point2> lens,
+                           std::span<Ray> rays) const {
+    assert(film.size() == rays.size() && lens.size() == rays.size());
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+        rays[i] = generate_ray(film[i], lens[i]);
+    }
+}
 
 CameraBasis camera_basis(const Vec3& eye, const Vec3& look_at, const Vec3& up) {
     CameraBasis b;

@@ -3,6 +3,7 @@
 
 #include <functional>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,11 @@ class Camera {
     // A film point the camera sees nothing through (outside a fisheye's image circle) gets a ray
     // whose direction is the zero vector: see sees_scene().
     virtual Ray generate_ray(Point2 film, Point2 lens) const = 0;
+    // generate_ray of several points at once: rays[i] = generate_ray(film[i], lens[i]), bit for bit (the
+    // spans are of one size). The render loop asks for a pixel's rays together; a camera that makes
+    // them faster together (the thin lens, four at a time in AVX2 lanes) overrides it.
+    virtual void generate_rays(std::span<const Point2> film, std::span<const Point2> lens,
+                               std::span<Ray> rays) const;
     // Whether generate_ray reads `lens`. The renderer draws no lens sample for a camera that does not
     // (a sample_2d is ~160 instructions; the other dimensions are numbered apart, so they keep their
     // values).

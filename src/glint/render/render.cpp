@@ -17,9 +17,17 @@ FilmAndLens camera_points(const View& view, const SampleHashes& key) {
     return view.sampler->camera_point(key, view.camera->uses_lens());
 }
 
+namespace {
+// The film point (in pixels) of pixel (x, y)'s sample at `film`, a point of the unit square, after the
+// pixel filter.
+Point2 film_point(const View& view, Point2 film, int x, int y) {
+    const Point2 offset = view.settings.filter.offset(film);
+    return {x + offset.x, y + offset.y};
+}
+}  // namespace
+
 std::optional<Ray> camera_ray(const View& view, const FilmAndLens& points, int x, int y) {
-    const Point2 offset = view.settings.filter.offset(points.film);
-    const Ray ray = view.camera->generate_ray({x + offset.x, y + offset.y}, points.lens);
+    const Ray ray = view.camera->generate_ray(film_point(view, points.film, x, y), points.lens);
     if (!sees_scene(ray)) {
         return std::nullopt;
     }
@@ -66,14 +74,23 @@ void render_samples(const World& world, const View& view, const Integrator& inte
     constexpr std::size_t kTogether = 16;
     for (std::size_t start = 0; start < points.size(); start += kTogether) {
         const std::size_t count = std::min(kTogether, points.size() - start);
+        // The camera makes the chunk's rays together (camera_ray's, for each sample).
+        Point2 film[kTogether];
+        Point2 lens[kTogether];
+        Ray made[kTogether];
+        for (std::size_t i = 0; i < count; ++i) {
+            film[i] = film_point(view, points[start + i].film, x, y);
+            lens[i] = points[start + i].lens;
+        }
+        view.camera->generate_rays({film, count}, {lens, count}, {made, count});
         FixedVector<Ray, kTogether> camera_rays;
         FixedVector<SampleStream, kTogether> streams;
         FixedVector<std::size_t, kTogether> sample_of;  // the sample (index into out) of each traced ray
         FixedVector<Rgb, kTogether> radiances;
         for (std::size_t i = start; i < start + count; ++i) {
             out[i] = Rgb{};
-            if (const std::optional<Ray> ray = camera_ray(view, points[i], x, y)) {
-                camera_rays.emplace_back(*ray);
+            if (const Ray& ray = made[i - start]; sees_scene(ray)) {
+                camera_rays.emplace_back(ray);
                 streams.emplace_back(*view.sampler,
                                      SampleHashes(pixel, first + static_cast<std::uint32_t>(i)),
                                      kFirstIntegratorDimension);
