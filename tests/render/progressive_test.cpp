@@ -42,6 +42,51 @@ TEST(ProgressiveRender, AllPassesGiveTheBitsOfRender) {
     EXPECT_EQ(progressive.film().sample_count(39, 22), 25u);
 }
 
+TEST(ProgressiveRender, PassesGrowAndLeaveNoSmallLastPass) {
+    // Passes of 1, 2, 4, 8, then 16 samples, and a remainder of at most half a pass taken with the last
+    // one: a power-of-two target no longer ends in a pass of one sample (16: 1 + 2 + 4 + 9, not
+    // 1 + 2 + 4 + 8 + 1).
+    const auto passes = [](std::uint32_t target) {
+        // A pattern that takes any count as it is (jittered rounds it up to a square).
+        const Scene scene = test::scene_from_text(
+            "render: {width: 3, height: 2, sampler: random, samples: " + std::to_string(target) + "}\n");
+        ProgressiveRender progressive(*scene.world, scene.view);
+        EXPECT_EQ(progressive.target_samples(), target);
+        std::vector<std::uint32_t> sizes;
+        while (!progressive.complete()) {
+            sizes.push_back(progressive.next_pass_samples());
+            const std::uint32_t before = progressive.samples_done();
+            EXPECT_TRUE(progressive.next_pass());
+            EXPECT_EQ(progressive.samples_done() - before, sizes.back());
+        }
+        return sizes;
+    };
+    using Passes = std::vector<std::uint32_t>;
+    EXPECT_EQ(passes(1), (Passes{1}));
+    EXPECT_EQ(passes(2), (Passes{1, 1}));
+    EXPECT_EQ(passes(4), (Passes{1, 3}));
+    EXPECT_EQ(passes(8), (Passes{1, 2, 5}));
+    EXPECT_EQ(passes(16), (Passes{1, 2, 4, 9}));
+    EXPECT_EQ(passes(25), (Passes{1, 2, 4, 8, 10}));
+    EXPECT_EQ(passes(32), (Passes{1, 2, 4, 8, 8, 9}));
+    EXPECT_EQ(passes(40), (Passes{1, 2, 4, 8, 16, 9}));
+    EXPECT_EQ(passes(64), (Passes{1, 2, 4, 8, 16, 16, 8, 9}));
+    for (std::uint32_t target = 1; target <= 100; ++target) {
+        const Passes sizes = passes(target);
+        std::uint32_t done = 0;
+        for (std::size_t i = 0; i < sizes.size(); ++i) {
+            EXPECT_GE(sizes[i], 1u) << target;
+            EXPECT_LE(sizes[i], 16u) << target;           // kMaxPassSamples: render_samples' buffers
+            EXPECT_LE(sizes[i], 2 * done + 1) << target;  // the first picture comes at once
+            if (i > 0 && i + 1 == sizes.size()) {
+                EXPECT_GE(2 * sizes[i], sizes[i - 1]) << target;  // no last pass below half the one before
+            }
+            done += sizes[i];
+        }
+        EXPECT_EQ(done, target);
+    }
+}
+
 TEST(ProgressiveRender, APassOfSeveralSamplesGivesEachTheBitsOfRenderSample) {
     // A pass of two or more samples hashes each pixel's dimensions once (PixelHashes) and hands the
     // samples keys that read them; a one-sample pass and render_sample hash as they go. With sobol and

@@ -16,7 +16,8 @@ namespace glint {
 namespace {
 
 // Passes grow 1, 2, 4, 8, then stay at 16 samples: the first picture comes at once, and later passes
-// amortise the per-tile overhead.
+// amortise the per-tile overhead. A remainder of at most half a pass joins the last one (see
+// next_pass_samples).
 constexpr std::uint32_t kMaxPassSamples = 16;
 
 // Runs `body(index)` for every index in [0, count) on all cores; false if `cancelled` said so first.
@@ -89,7 +90,19 @@ void ProgressiveRender::resume_after(std::uint32_t samples) {
 }
 
 std::uint32_t ProgressiveRender::next_pass_samples() const {
-    return std::min({done_ + 1, kMaxPassSamples, target_ - std::min(done_, target_)});
+    const std::uint32_t remaining = target_ - std::min(done_, target_);
+    const std::uint32_t growing = std::min(done_ + 1, kMaxPassSamples);
+    if (remaining <= growing) {
+        return remaining;
+    }
+    // The growing passes add up to 2^k - 1, so a power-of-two target, the usual one, ended in a pass of
+    // one sample: a whole pass over the image for it, without the batched render loop of the others
+    // (render_samples). A remainder of at most half a pass is taken with this pass instead; beyond a
+    // pass's maximum, the two are split evenly (at most 24 samples, so two passes of at most 12).
+    if (2 * (remaining - growing) <= growing) {
+        return remaining <= kMaxPassSamples ? remaining : remaining / 2;
+    }
+    return growing;
 }
 
 bool ProgressiveRender::next_pass(const CancelCheck& cancelled, const TileDone& tile_done) {
