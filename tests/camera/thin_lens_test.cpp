@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "camera/camera_test_util.hpp"
+#include "glint/core/cpu.hpp"
 #include "glint/core/hash.hpp"
 #include "glint/image/image_io.hpp"
 #include "glint/params/diagnostics.hpp"
@@ -83,6 +84,9 @@ TEST(ThinLens, RaysTogetherAreOneByOnesRays) {
     // each ray must be generate_ray's to the bit. Lens points: a grid with the edges, the centre (where
     // the concentric map divides 0 by 0), the diagonals |a| = |b| and the axes a = 0, b = 0 on it, and
     // random points; counts 0 to 13, so that every tail length follows the groups of four.
+    if (!cpu_has_avx2_and_fma()) {
+        GTEST_SKIP() << "no AVX2 and FMA on this CPU: generate_rays calls generate_ray, nothing to compare";
+    }
     std::vector<Point2> lens = lens_grid(9);
     std::vector<Point2> film;
     for (std::uint32_t i = 0; i < 200; ++i) {

@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <set>
 
 #include "glint/core/frame.hpp"
@@ -19,24 +20,29 @@ TEST(Vec3, DotCrossAndLength) {
     EXPECT_NEAR(length(normalize(Vec3(-2, 7, 0.5))), 1.0, 1e-15);
 }
 
-TEST(Vec3, NormalizeNearUnitIsNormalizeToTheLastBits) {
-    // Vectors off unit length by up to ±2^-28 (inside the Newton step's range) and by more (normalize's).
+TEST(Vec3, NormalizeNearUnitIsNormalizeWithinAFewUlps) {
+    // Vectors whose squared length is off 1 by e, for |e| from 2^-40 to 2^-10 on both sides of the Newton
+    // step's bound (2^-27), and far from unit: within 4 ulps of normalize and unit within 4 ulps, so that
+    // a bound set too wide (one Newton step off by ~3e²/8) fails; beyond the bound, normalize's own bits.
+    constexpr double kUlp = 0x1p-52;
     for (std::uint32_t i = 0; i < 20000; ++i) {
         const SampleKey key{5, i, 0, 0};
         const Vec3 direction =
             normalize(Vec3{key.uniform(0) - 0.5, key.uniform(1) - 0.5, key.uniform(2) - 0.5});
-        const double off = i % 2 == 0 ? (key.uniform(3) - 0.5) * 0x1p-27 : (key.uniform(3) - 0.5) * 4;
-        const Vec3 v = direction * (1 + off);
+        const double e = std::ldexp(key.uniform(3) < 0.5 ? -1.0 : 1.0, -10 - static_cast<int>(i % 31));
+        const Vec3 v = direction * std::sqrt(1 + e * (0.5 + key.uniform(4)));  // |v|² − 1 within (e/2, 3e/2)
         const Vec3 n = normalize_near_unit(v);
-        EXPECT_NEAR(length(n), 1.0, 0x1p-51) << i;
         const Vec3 exact = normalize(v);
+        EXPECT_NEAR(length(n), 1.0, 4 * kUlp) << i;
         for (int a = 0; a < 3; ++a) {
-            EXPECT_NEAR(n[a], exact[a], 0x1p-51) << i;
+            EXPECT_NEAR(n[a], exact[a], 4 * kUlp) << i;
         }
-        if (i % 2 == 1 && std::abs(off) * 2 > 0x1p-27) {
-            EXPECT_EQ(n, exact) << "far from unit: normalize's own result " << i;
+        if (std::abs(length_squared(v) - 1) >= 0x1p-27) {
+            EXPECT_EQ(n, exact) << "beyond the bound: normalize's own result " << i;
         }
     }
+    const Vec3 far = Vec3{3, -4, 12};
+    EXPECT_EQ(normalize_near_unit(far), normalize(far));
 }
 
 TEST(Vec3, ReflectIsPaperEquation16) {

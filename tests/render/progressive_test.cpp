@@ -44,7 +44,7 @@ TEST(ProgressiveRender, AllPassesGiveTheBitsOfRender) {
 
 TEST(ProgressiveRender, PassesGrowAndLeaveNoSmallLastPass) {
     // Passes of 1, 2, 4, 8, then 16 samples, and a remainder of at most half a pass taken with the last
-    // one when both fit in one pass: a power-of-two target up to 16 no longer ends in a pass of one
+    // one when both fit in one pass: a power-of-two target from 4 to 16 no longer ends in a pass of one
     // sample (16: 1 + 2 + 4 + 9, not 1 + 2 + 4 + 8 + 1).
     const auto passes = [](std::uint32_t target) {
         // A pattern that takes any count as it is (jittered rounds it up to a square).

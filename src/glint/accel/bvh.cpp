@@ -111,12 +111,6 @@ struct SphereLanes {
 
 using namespace avx2;  // the lane arithmetic test_sphere_lanes spells out
 
-// dot(p, q) = p.x q.x + p.y q.y + p.z q.z, added left to right as vec.hpp does.
-__attribute__((target("avx2"))) inline __m256d dot3(__m256d px, __m256d py, __m256d pz, __m256d qx,
-                                                    __m256d qy, __m256d qz) {
-    return add(add(mul(px, qx), mul(py, qy)), mul(pz, qz));
-}
-
 // Fills `lanes` in place (sphere, hit and other; t unless every sphere lane misses): returned by value,
 // the 224-byte record was copied twice a group (2.5 % of smallpt's instructions).
 __attribute__((target("avx2"))) inline void test_sphere_lanes(const double* records, const Ray& ray,

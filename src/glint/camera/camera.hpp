@@ -24,8 +24,8 @@ class Camera {
     // whose direction is the zero vector: see sees_scene().
     virtual Ray generate_ray(Point2 film, Point2 lens) const = 0;
     // generate_ray of several points at once: rays[i] = generate_ray(film[i], lens[i]), bit for bit (the
-    // spans are of one size). The render loop asks for a pixel's rays together; a camera that makes
-    // them faster together (the thin lens, four at a time in AVX2 lanes) overrides it.
+    // spans are of one size). The render loop asks for up to 16 of a pixel's rays of one pass together; a
+    // camera that makes them faster together (the thin lens, four at a time in AVX2 lanes) overrides it.
     virtual void generate_rays(std::span<const Point2> film, std::span<const Point2> lens,
                                std::span<Ray> rays) const;
     // Whether generate_ray reads `lens`. The renderer draws no lens sample for a camera that does not
@@ -98,7 +98,8 @@ ViewParams read_view_params(Params& params, FilmSize film);
 // The (not normalised) direction from the eye through the view-plane point of `film`: its component
 // along −w is the view distance d, across it the film offset from the image centre in view-plane units.
 // Inline, as ray_from_near_surface: both are on every camera ray's path (inlined, RTIOW's final scene
-// runs 0.8 % fewer instructions).
+// runs 0.8 % fewer instructions). The thin lens repeats both in AVX2 lanes, operation for operation
+// (thin_lens.cpp, thin_lens_rays_avx2): change them together.
 inline Vec3 view_plane_direction(const ViewParams& view, FilmSize size, Point2 film) {
     const double x = view.pixel_size * (film.x - 0.5 * size.width);
     const double y = view.pixel_size * (0.5 * size.height - film.y);

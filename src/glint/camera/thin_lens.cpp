@@ -11,6 +11,7 @@
 
 namespace glint {
 
+// thin_lens_rays_avx2 (below) repeats it in AVX2 lanes, operation for operation: change both together.
 Ray ThinLensCamera::generate_ray(Point2 film, Point2 lens) const {
     // The pinhole ray's direction has component d along −w, so scaling it by z_f/d reaches the focus
     // plane: every ray of this film point, whatever its lens point, passes there.
@@ -27,9 +28,7 @@ namespace {
 // Each step is its scalar namesake's (generate_ray above, view_plane_direction, square_to_disk_concentric,
 // sincos_quarter_pi, ray_from_near_surface) lane by lane: the same IEEE operations in the same order, no
 // fused multiply–add (the build has -ffp-contract=off), so the same bits (test
-// Camera.ThinLensRaysTogetherAreOneByOnesRays).
-#define GLINT_AVX2_INLINE __attribute__((target("avx2,fma"), always_inline)) inline
-
+// ThinLens.RaysTogetherAreOneByOnesRays).
 using namespace avx2;
 
 struct Vec3Lanes {
@@ -41,7 +40,7 @@ GLINT_AVX2_INLINE Vec3Lanes combination(__m256d s, const Vec3& a, __m256d t, con
             add(mul(s, splat(a.z)), mul(t, splat(b.z)))};
 }
 
-GLINT_AVX2_INLINE void sincos_quarter_pi_splat(__m256d x, __m256d& sin, __m256d& cos) {
+GLINT_AVX2_INLINE void sincos_quarter_pi_lanes(__m256d x, __m256d& sin, __m256d& cos) {
     const __m256d y = mul(x, x);
     const __m256d y2 = mul(y, y);
     const __m256d y4 = mul(y2, y2);
@@ -62,25 +61,23 @@ GLINT_AVX2_INLINE void sincos_quarter_pi_splat(__m256d x, __m256d& sin, __m256d&
 
 // square_to_disk_concentric: its two cases chosen per lane by blends, with one division (of the chosen
 // operands), and its centre (a = b = 0, where the division gives NaN) set to 0 by a mask.
-GLINT_AVX2_INLINE void disk_concentric_splat(__m256d ux, __m256d uy, __m256d& x, __m256d& y) {
+GLINT_AVX2_INLINE void disk_concentric_lanes(__m256d ux, __m256d uy, __m256d& x, __m256d& y) {
     const __m256d a = sub(mul(splat(2), ux), splat(1));
     const __m256d b = sub(mul(splat(2), uy), splat(1));
     const __m256d sign_bit = splat(-0.0);
     const __m256d a_wider =
         _mm256_cmp_pd(_mm256_andnot_pd(sign_bit, a), _mm256_andnot_pd(sign_bit, b), _CMP_GT_OQ);
-    const __m256d scale = select(a_wider, b, a);  // a where |a| > |b|, else b
-    const __m256d ratio = _mm256_div_pd(select(a_wider, a, b), scale);
+    const __m256d scale = blend(b, a, a_wider);  // a where |a| > |b|, else b
+    const __m256d ratio = _mm256_div_pd(blend(a, b, a_wider), scale);
     __m256d sin, cos;
-    sincos_quarter_pi_splat(mul(splat(kPi / 4), ratio), sin, cos);
+    sincos_quarter_pi_lanes(mul(splat(kPi / 4), ratio), sin, cos);
     const __m256d centre = _mm256_and_pd(_mm256_cmp_pd(a, _mm256_setzero_pd(), _CMP_EQ_OQ),
                                          _mm256_cmp_pd(b, _mm256_setzero_pd(), _CMP_EQ_OQ));
-    x = _mm256_andnot_pd(centre, mul(scale, select(a_wider, sin, cos)));
-    y = _mm256_andnot_pd(centre, mul(scale, select(a_wider, cos, sin)));
+    x = _mm256_andnot_pd(centre, mul(scale, blend(sin, cos, a_wider)));
+    y = _mm256_andnot_pd(centre, mul(scale, blend(cos, sin, a_wider)));
 }
 
-#undef GLINT_AVX2_INLINE
-
-// The rays of the first multiple of four points; returns how many it made.
+// The rays of the largest multiple of four of the points; returns how many it made.
 __attribute__((target("avx2,fma"))) std::size_t thin_lens_rays_avx2(const ViewParams& view, FilmSize size,
                                                                     double lens_radius, double focus_distance,
                                                                     std::span<const Point2> film,
@@ -103,7 +100,7 @@ __attribute__((target("avx2,fma"))) std::size_t thin_lens_rays_avx2(const ViewPa
                                  mul(sub(across.y, splat(w_term.y)), to_focus_scale),
                                  mul(sub(across.z, splat(w_term.z)), to_focus_scale)};
         __m256d disk_x, disk_y;
-        disk_concentric_splat(lens_x, lens_y, disk_x, disk_y);
+        disk_concentric_lanes(lens_x, lens_y, disk_x, disk_y);
         const Vec3Lanes offset_direction = combination(disk_x, b.u, disk_y, b.v);
         const __m256d radius = splat(lens_radius);
         const Vec3Lanes offset{mul(offset_direction.x, radius), mul(offset_direction.y, radius),
@@ -113,9 +110,8 @@ __attribute__((target("avx2,fma"))) std::size_t thin_lens_rays_avx2(const ViewPa
         const Vec3Lanes direction{sub(to_focus.x, offset.x), sub(to_focus.y, offset.y),
                                   sub(to_focus.z, offset.z)};
         // ray_from_near_surface: normalize (a reciprocal, then three multiplies), then the near surface.
-        const __m256d length =
-            _mm256_sqrt_pd(add(add(mul(direction.x, direction.x), mul(direction.y, direction.y)),
-                               mul(direction.z, direction.z)));
+        const __m256d length = _mm256_sqrt_pd(
+            dot3(direction.x, direction.y, direction.z, direction.x, direction.y, direction.z));
         const __m256d inverse = _mm256_div_pd(splat(1.0), length);
         const Vec3Lanes unit{mul(direction.x, inverse), mul(direction.y, inverse), mul(direction.z, inverse)};
         Vec3Lanes start = origin;

@@ -11,6 +11,9 @@
 
 namespace glint::avx2 {
 
+// For lane functions of one's own: compiled for AVX2 and FMA, and always inlined into their callers
+// (which are too).
+#define GLINT_AVX2_INLINE __attribute__((target("avx2,fma"), always_inline)) inline
 #define GLINT_AVX2_LANE_OP __attribute__((target("avx2"), always_inline)) inline
 
 GLINT_AVX2_LANE_OP __m256d splat(double x) {
@@ -28,8 +31,12 @@ GLINT_AVX2_LANE_OP __m256d sub(__m256d p, __m256d q) {
 GLINT_AVX2_LANE_OP __m256d mul(__m256d p, __m256d q) {
     return _mm256_mul_pd(p, q);
 }
-// p in the lanes where `mask` is clear, q where it is set.
-GLINT_AVX2_LANE_OP __m256d select(__m256d mask, __m256d p, __m256d q) {
+// dot(p, q) = p.x q.x + p.y q.y + p.z q.z per lane, added left to right as vec.hpp does.
+GLINT_AVX2_LANE_OP __m256d dot3(__m256d px, __m256d py, __m256d pz, __m256d qx, __m256d qy, __m256d qz) {
+    return add(add(mul(px, qx), mul(py, qy)), mul(pz, qz));
+}
+// As _mm256_blendv_pd: p in the lanes where `mask` is clear, q where it is set.
+GLINT_AVX2_LANE_OP __m256d blend(__m256d p, __m256d q, __m256d mask) {
     return _mm256_blendv_pd(p, q, mask);
 }
 

@@ -42,7 +42,8 @@ struct SinCos {
 // by Horner's rule: about half the chain of dependent operations, which is what the sampling code
 // waits for. Summing the small terms first and adding 1 last keeps the accuracy of Horner's rule:
 // within 1.4 ulp of the exact sine and 1 ulp of the exact cosine (Horner's: 1.4 and 1.2), and within
-// 2 ulps of Horner's results (tests/core/math_test.cpp).
+// 2 ulps of Horner's results (tests/core/math_test.cpp). The thin lens repeats it in AVX2 lanes,
+// operation for operation (camera/thin_lens.cpp, sincos_quarter_pi_lanes): change both together.
 inline SinCos sincos_quarter_pi(double x) {
     const double y = x * x;
     const double y2 = y * y;

@@ -74,10 +74,11 @@ inline double length(const Vec3& v) {
 inline Vec3 normalize(const Vec3& v) {
     return v / length(v);
 }
-// normalize(v) for a v that is a unit vector up to rounding (a direction sampled as unit, a sphere's
-// radius vector over its radius), without the square root and the division, whose latency stood on the
-// way from one ray to the next: |v|² = 1 + e, and one Newton step for 1/sqrt(1 + e), 1 − e/2, is off by
-// about 3e²/8, below 2^-55 when |e| < 2^-27. Any other v takes normalize.
+// normalize(v) for a v that is a unit vector up to its rounding (a sphere's radius vector over its
+// radius), without the square root and the division, whose latency stood on the way from one ray to the
+// next: |v|² = 1 + e, and one Newton step for 1/sqrt(1 + e), 1 − e/2, is off by about 3e²/8, below
+// 2^-55 when |e| < 2^-27; the rounding of e and of the products then leaves a few ulps, as normalize's
+// own. Any other v takes normalize.
 inline Vec3 normalize_near_unit(const Vec3& v) {
     const double excess = dot(v, v) - 1;
     return std::abs(excess) < 0x1p-27 ? v * (1 - 0.5 * excess) : normalize(v);

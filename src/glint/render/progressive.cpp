@@ -95,11 +95,11 @@ std::uint32_t ProgressiveRender::next_pass_samples() const {
         return remaining;
     }
     // The growing passes add up to 2^k - 1, so a power-of-two target, the usual one, ended in a pass of
-    // one sample: a whole pass over the image for it, without the batched render loop of the others
-    // (render_samples). A remainder of at most half a pass is taken with this pass when both fit in one.
-    // (Beyond that, splitting them evenly, 32 samples as 1 + 2 + 4 + 8 + 8 + 9, cost a pass's per-pixel
-    // set-up more than the one-sample pass of 1 + 2 + 4 + 8 + 16 + 1 cost: 1.019 of RTIOW's time.)
-    if (2 * (remaining - growing) <= growing && remaining <= kMaxPassSamples) {
+    // one sample (from 4 samples on): a whole pass over the image for it, without the batched render loop of
+    // the others (render_samples). A remainder of at most half a pass is taken with this pass when both fit
+    // in one. (Beyond that, splitting them evenly, 32 samples as 1 + 2 + 4 + 8 + 8 + 9, cost a pass's
+    // per-pixel set-up more than the one-sample pass of 1 + 2 + 4 + 8 + 16 + 1 cost: 1.019 of RTIOW's time.)
+    if (remaining <= kMaxPassSamples && 2 * (remaining - growing) <= growing) {
         return remaining;
     }
     return growing;

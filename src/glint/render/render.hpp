@@ -42,7 +42,8 @@ struct RenderCallbacks {
     const std::atomic<bool>* stop_after_pass = nullptr;
     // When positive: the render stops at the end of the first pass that ends this many seconds or more
     // after it started (RenderStats::time_limit_reached), so every pixel has the same samples. Passes
-    // take samples 0, 1–2, 3–6, 7–14, then 16 at a time, so the limit is overrun by at most one pass.
+    // take samples 0, 1–2, 3–6, 7–14, then 16 at a time (ProgressiveRender), so the limit is overrun by at
+    // most one pass.
     double time_limit_seconds = 0;
     // Called after each complete pass, on the calling thread, with the samples every pixel now has: the
     // film is then consistent, so this is where a checkpoint is written (render/checkpoint.hpp).

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstring>
 
+#include "glint/core/avx2_lanes.hpp"
 #include "glint/core/cpu.hpp"
 #include "glint/sampling/low_discrepancy.hpp"
 
@@ -73,7 +74,6 @@ __attribute__((always_inline)) inline Point2 scrambled_point(const ReversedPoint
 // Each function is its scalar namesake (above, in low_discrepancy.hpp or in core/hash.hpp) lane by lane:
 // integer operations that wrap as uint32_t does, and an exact conversion to double, so the same bits
 // (SamplePatterns.CameraPointsTogetherAreOneByOnesPoints checks it).
-#define GLINT_AVX2_INLINE __attribute__((target("avx2,fma"), always_inline)) inline
 
 GLINT_AVX2_INLINE __m256i broadcast(std::uint32_t x) {
     return _mm256_set1_epi32(static_cast<int>(x));
@@ -173,8 +173,6 @@ GLINT_AVX2_INLINE void store_rows(__m256d film_x, __m256d film_y, __m256d lens_x
         std::memcpy(static_cast<void*>(out + i), &rows[i], sizeof(FilmAndLens));
     }
 }
-
-#undef GLINT_AVX2_INLINE
 
 __attribute__((target("avx2,fma"))) void camera_points_avx2(const PixelHashes& pixel, std::uint32_t first,
                                                             bool lens, std::span<FilmAndLens> out) {

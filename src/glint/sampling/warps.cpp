@@ -15,6 +15,8 @@ Vec3 direction_from(double cos_theta, double v) {
 }
 }  // namespace
 
+// The thin lens repeats it in AVX2 lanes, operation for operation (camera/thin_lens.cpp,
+// disk_concentric_lanes): change both together.
 Point2 square_to_disk_concentric(Point2 u) {
     const double a = 2 * u.x - 1;
     const double b = 2 * u.y - 1;
