@@ -76,7 +76,7 @@ TEST(ProgressiveRender, PassesGrowAndLeaveNoSmallLastPass) {
         std::uint32_t done = 0;
         for (std::size_t i = 0; i < sizes.size(); ++i) {
             EXPECT_GE(sizes[i], 1u) << target;
-            EXPECT_LE(sizes[i], 16u) << target;           // kMaxPassSamples: render_samples' buffers
+            EXPECT_LE(sizes[i], 16u) << target;           // kMaxPassSamples: a batch's buffers
             EXPECT_LE(sizes[i], 2 * done + 1) << target;  // the first picture comes at once
             if (i > 0 && i + 1 == sizes.size() && sizes[i - 1] + sizes[i] <= 16) {
                 // No last pass below half the one before, when the two fit in one.
@@ -90,41 +90,112 @@ TEST(ProgressiveRender, PassesGrowAndLeaveNoSmallLastPass) {
 
 TEST(ProgressiveRender, APassOfSeveralSamplesGivesEachTheBitsOfRenderSample) {
     // A pass of two or more samples hashes each pixel's dimensions once (PixelHashes) and hands the
-    // samples keys that read them; a one-sample pass and render_sample hash as they go. With sobol and
-    // a lens (film and lens read the cached dimensions) and a path of bounces (later ones too), the
-    // film must hold, to the bit, the sum of render_sample's radiances in sample order.
-    const Scene scene = test::scene_from_text(
-        "render: {width: 8, height: 6, samples: 3, sampler: sobol, integrator: path}\n"
-        "camera: {type: thin-lens, eye: [0, 1, 5], look_at: [0, 0.5, 0], fov: 40, lens_radius: 0.2}\n"
-        "objects:\n"
-        "  - {type: sphere, center: [0, 0.5, 0], radius: 0.5, material: {type: matte, albedo: [0.7, 0.5, "
-        "0.3]}}\n"
-        "  - {type: plane, point: [0, 0, 0], normal: [0, 1, 0], material: {type: matte, albedo: [0.5, 0.5, "
-        "0.5]}}\n"
-        "lights:\n  - {type: point, position: [1, 3, 2], intensity: 20}\n"
-        "background: [0.2, 0.3, 0.4]\n");
-    ProgressiveRender progressive(*scene.world, scene.view);
-    ASSERT_TRUE(progressive.next_pass());  // sample 0 alone
-    ASSERT_TRUE(progressive.next_pass());  // samples 1 and 2, from the pixel's PixelHashes
-    ASSERT_EQ(progressive.samples_done(), 3u);
-    RayCounters rays;
-    for (int y = 0; y < 6; ++y) {
-        for (int x = 0; x < 8; ++x) {
-            Rgb sum;
-            for (std::uint32_t s = 0; s < 3; ++s) {
-                sum += render_sample(*scene.world, scene.view, progressive.integrator(), x, y, s, rays);
+    // samples keys that read them; a one-sample pass and render_sample hash as they go. The passes go to
+    // the camera and the integrator in batches of whole pixels (16 pixels' samples in a pass of one, 8 in
+    // a pass of two, 2 in a pass of six, a pixel's alone in a pass of nine), which end where the tile
+    // ends. With sobol and a lens (film and lens read the cached dimensions) and a path of bounces
+    // (later ones too), the film must hold, to the bit, the sum of render_sample's radiances in sample
+    // order: for 3 samples (passes 1, 2), 13 (1, 2, 4, 6) and 16 (1, 2, 4, 9), on an image of 8 × 6
+    // pixels in one tile and on one of 21 × 19 in several, whose rows and tiles are not multiples of a
+    // batch.
+    for (const std::uint32_t samples : {3u, 13u, 16u}) {
+        for (const auto& [width, height] : {std::pair{8, 6}, std::pair{21, 19}}) {
+            const Scene scene = test::scene_from_text(
+                "render: {width: " + std::to_string(width) + ", height: " + std::to_string(height) +
+                ", samples: " + std::to_string(samples) +
+                ", sampler: sobol, integrator: path}\n"
+                "camera: {type: thin-lens, eye: [0, 1, 5], look_at: [0, 0.5, 0], fov: 40, lens_radius: 0.2}\n"
+                "objects:\n"
+                "  - {type: sphere, center: [0, 0.5, 0], radius: 0.5, material: {type: matte, albedo: [0.7, "
+                "0.5, 0.3]}}\n"
+                "  - {type: plane, point: [0, 0, 0], normal: [0, 1, 0], material: {type: matte, albedo: "
+                "[0.5, 0.5, 0.5]}}\n"
+                "lights:\n  - {type: point, position: [1, 3, 2], intensity: 20}\n"
+                "background: [0.2, 0.3, 0.4]\n");
+            ProgressiveRender progressive(*scene.world, scene.view);
+            while (!progressive.complete()) {
+                ASSERT_TRUE(progressive.next_pass());
             }
-            const Rgb film = progressive.film().raw_pixel(x, y).sum;
-            ASSERT_EQ(film.r, sum.r) << x << ", " << y;
-            ASSERT_EQ(film.g, sum.g) << x << ", " << y;
-            ASSERT_EQ(film.b, sum.b) << x << ", " << y;
+            ASSERT_EQ(progressive.samples_done(), samples);
+            RayCounters rays;
+            for (int y = 0; y < height; ++y) {
+                for (int x = 0; x < width; ++x) {
+                    Rgb sum;
+                    for (std::uint32_t s = 0; s < samples; ++s) {
+                        sum +=
+                            render_sample(*scene.world, scene.view, progressive.integrator(), x, y, s, rays);
+                    }
+                    const Film::Pixel& film = progressive.film().raw_pixel(x, y);
+                    ASSERT_EQ(film.count, samples) << x << ", " << y;
+                    ASSERT_EQ(film.sum.r, sum.r) << samples << ": " << x << ", " << y;
+                    ASSERT_EQ(film.sum.g, sum.g) << samples << ": " << x << ", " << y;
+                    ASSERT_EQ(film.sum.b, sum.b) << samples << ": " << x << ", " << y;
+                }
+            }
+            EXPECT_GT(rays.secondary, 0u);  // the paths bounced
         }
     }
-    EXPECT_GT(rays.secondary, 0u);  // the paths bounced
+}
+
+TEST(ProgressiveRender, ABatchOfSeveralPixelsGivesEachSampleTheBitsOfRenderSample) {
+    // render_batch takes samples of several pixels at once, as a pass of one or a few samples a pixel
+    // hands them: each must get render_sample's bits and rays, through a fisheye whose corners see
+    // nothing (black, left out of the call) and through a thin lens (rays made four at a time), for
+    // batches of 1 to 20 samples (beyond 16 the samples go in two calls).
+    const std::string fisheye = "{type: fisheye, eye: [0, 1, 5], look_at: [0, 0.5, 0], fov: 200}";
+    const std::string thin_lens =
+        "{type: thin-lens, eye: [0, 1, 5], look_at: [0, 0.5, 0], fov: 60, lens_radius: 0.2}";
+    for (const std::string& camera : {fisheye, thin_lens}) {
+        const Scene scene = test::scene_from_text(
+            "render: {width: 7, height: 5, samples: 4, sampler: sobol, integrator: path}\n"
+            "camera: " +
+            camera +
+            "\n"
+            "objects:\n"
+            "  - {type: sphere, center: [0, 0.5, 0], radius: 0.5, material: {type: dielectric, ior: 1.5}}\n"
+            "  - {type: plane, point: [0, 0, 0], normal: [0, 1, 0], material: {type: matte, albedo: 0.5}}\n"
+            "lights:\n  - {type: point, position: [1, 3, 2], intensity: 40}\n"
+            "background: [0.2, 0.3, 0.4]\n");
+        ProgressiveRender progressive(*scene.world, scene.view);
+        const Integrator& traced = progressive.integrator();
+        int unseen = 0;
+        for (std::size_t count = 1; count <= 20; ++count) {
+            // Pixels in row order from (count mod 7, 0), each with sample (pixel index mod 3).
+            std::vector<SampleJob> jobs;
+            for (std::size_t i = 0; i < count; ++i) {
+                const int pixel = static_cast<int>((count + i) % 35);
+                const int x = pixel % 7, y = pixel / 7;
+                const SampleHashes key(
+                    SampleHashes::pixel_hash(scene.view.settings.seed, static_cast<std::uint32_t>(x),
+                                             static_cast<std::uint32_t>(y)),
+                    static_cast<std::uint32_t>(i % 3));
+                jobs.push_back(SampleJob{x, y, key, camera_points(scene.view, key)});
+            }
+            std::vector<Rgb> together(count, Rgb(std::numeric_limits<double>::quiet_NaN()));
+            RayCounters rays_together;
+            render_batch(*scene.world, scene.view, traced, jobs, rays_together, together);
+            RayCounters rays_alone;
+            for (std::size_t i = 0; i < count; ++i) {
+                const SampleJob& job = jobs[i];
+                const Rgb alone = render_sample(*scene.world, scene.view, traced, job.x, job.y,
+                                                job.key.sample(), rays_alone);
+                ASSERT_EQ(together[i].r, alone.r) << count << ", " << i;
+                ASSERT_EQ(together[i].g, alone.g) << count << ", " << i;
+                ASSERT_EQ(together[i].b, alone.b) << count << ", " << i;
+                unseen += camera_ray(scene.view, job.points, job.x, job.y) ? 0 : 1;
+            }
+            ASSERT_EQ(rays_together.camera, rays_alone.camera);
+            ASSERT_EQ(rays_together.shadow, rays_alone.shadow);
+            ASSERT_EQ(rays_together.secondary, rays_alone.secondary);
+        }
+        if (camera == fisheye) {
+            EXPECT_GT(unseen, 0);  // the batches held samples the camera does not see
+        }
+    }
 }
 
 TEST(ProgressiveRender, SamplesTakenTogetherAreEachRenderSamplesBits) {
-    // render_samples hands a pass's camera rays to the integrator together: the path tracer traces all
+    // render_batch hands a pass's camera rays to the integrator together: the path tracer traces all
     // their first rays before any path goes on, the others one sample after the other. Each sample must
     // get, to the bit, what render_sample gives it alone, with the same rays counted: through a
     // fisheye whose corners see nothing (those samples are black and left out of the call), with the
@@ -170,11 +241,14 @@ TEST(ProgressiveRender, SamplesTakenTogetherAreEachRenderSamplesBits) {
                             std::vector<FilmAndLens> points(count);
                             scene.view.sampler->camera_points(pixel, first, scene.view.camera->uses_lens(),
                                                               points);
-                            // NaN, so that a sample render_samples leaves unwritten fails.
+                            // NaN, so that a sample render_batch leaves unwritten fails.
                             std::vector<Rgb> together(count, Rgb(std::numeric_limits<double>::quiet_NaN()));
                             RayCounters rays_together;
-                            render_samples(*scene.world, scene.view, traced, x, y, pixel, first, points,
-                                           rays_together, together);
+                            std::vector<SampleJob> jobs;
+                            for (std::uint32_t i = 0; i < count; ++i) {
+                                jobs.push_back(SampleJob{x, y, SampleHashes(pixel, first + i), points[i]});
+                            }
+                            render_batch(*scene.world, scene.view, traced, jobs, rays_together, together);
                             RayCounters rays_alone;
                             int unseen = 0;
                             for (std::uint32_t i = 0; i < count; ++i) {

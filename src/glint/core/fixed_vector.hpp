@@ -33,6 +33,8 @@ class FixedVector {
     }
 
     std::size_t size() const { return size_; }
+    // Forgets every element (plain values: nothing to destroy); their slots are reused.
+    void clear() { size_ = 0; }
     T& operator[](std::size_t i) {
         assert(i < size_);
         return items()[i];

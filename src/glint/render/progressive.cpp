@@ -95,9 +95,11 @@ std::uint32_t ProgressiveRender::next_pass_samples() const {
         return remaining;
     }
     // The growing passes add up to 2^k - 1, so a power-of-two target, the usual one, ended in a pass of
-    // one sample (from 4 samples on): a whole pass over the image for it, without the batched render loop of
-    // the others (render_samples). A remainder of at most half a pass is taken with this pass when both fit
-    // in one. (Beyond that, splitting them evenly, 32 samples as 1 + 2 + 4 + 8 + 8 + 9, cost a pass's
+    // one sample (from 4 samples on): a whole pass over the image for it, then without the batches of the
+    // others (RTIOW at 4 spp: 0.946 of the time with the merge). A remainder of at most half a pass is
+    // taken with this pass when both fit in one. (Since a one-sample pass is batched across pixels too,
+    // the merge is within noise: RTIOW at 16 spp took 0.987 (0.955–1.046) of the time without it.)
+    // (Beyond that, splitting them evenly, 32 samples as 1 + 2 + 4 + 8 + 8 + 9, cost a pass's
     // per-pixel set-up more than the one-sample pass of 1 + 2 + 4 + 8 + 16 + 1 cost: 1.019 of RTIOW's time.)
     if (remaining <= kMaxPassSamples && 2 * (remaining - growing) <= growing) {
         return remaining;
@@ -115,46 +117,64 @@ bool ProgressiveRender::next_pass(const CancelCheck& cancelled, const TileDone& 
     const bool finished = parallel_tiles(tiles_.size(), cancelled, [&](std::size_t t) {
         const Tile& tile = tiles_[t];
         TileTally& tally = tallies_[t];
+        // The pass's samples go to the camera and the integrator in batches of whole pixels, up to
+        // kMaxPassSamples samples: one pixel's in a pass of 9 to 16 samples, 16 pixels' in a pass of one.
+        // Batched, a sample costs less (the camera's and the sampler's lanes full, the batch's camera rays
+        // traced one after the other through the same part of the tree): before, a pass of one sample a
+        // pixel took its samples one at a time and a pass of two took them in pairs, and on RTIOW's final
+        // scene each of their samples cost 1.2–1.3 times one of a pass of 16.
+        FixedVector<SampleJob, kMaxPassSamples> jobs;
+        // The batch's pixels' hashes, to which its keys refer (a pass of several samples a pixel).
+        FixedVector<PixelHashes, kMaxPassSamples / 2> pixels;
+        const auto render_jobs = [&] {
+            FixedVector<Rgb, kMaxPassSamples> radiances;
+            for (std::size_t i = 0; i < jobs.size(); ++i) {
+                radiances.emplace_back();
+            }
+            render_batch(world_, view_, *integrator_, jobs.span(), tally.rays, radiances.span());
+            // In the batch's order: each pixel's samples in order, as the film must add them.
+            for (std::size_t i = 0; i < jobs.size(); ++i) {
+                const SampleJob& job = jobs[i];
+                const Rgb& radiance = radiances[i];
+                if (!radiance.is_finite()) {
+                    if (tally.nonfinite++ == 0) {
+                        tally.first_x = job.x;
+                        tally.first_y = job.y;
+                        tally.first_sample = job.key.sample();
+                    }
+                    continue;
+                }
+                film_.add_sample(job.x, job.y, radiance);
+            }
+            jobs.clear();
+            pixels.clear();
+        };
+        const bool lens = view_.camera->uses_lens();
         for (int y = tile.y0; y < tile.y1; ++y) {
             for (int x = tile.x0; x < tile.x1; ++x) {
+                if (jobs.size() + count > kMaxPassSamples) {
+                    render_jobs();
+                }
                 const std::uint64_t pixel_hash = SampleHashes::pixel_hash(
                     view_.settings.seed, static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y));
-                // The pixel's hashed dimensions, for a pass of several samples (they cost two samples'
-                // worth of hashing); a one-sample pass hashes as it goes. The same bits either way.
-                // A pass of several samples also draws its samples' camera points together (sobol:
-                // eight at a time in AVX2 lanes): RTIOW's final scene at 32 spp renders in 0.96–0.97
-                // of the time (bench/ab.py), and hands their camera rays to the integrator together
-                // (render_samples; 0.945 of the time again).
-                FixedVector<Rgb, kMaxPassSamples> radiances;
-                for (std::uint32_t s = 0; s < count; ++s) {
-                    radiances.emplace_back();
-                }
                 if (count > 1) {
-                    const PixelHashes pixel(pixel_hash);
+                    // The pixel's hashed dimensions, computed once for its samples (they cost two samples'
+                    // worth of hashing), and its samples' camera points drawn together (sobol: eight at a
+                    // time in AVX2 lanes; RTIOW's final scene at 32 spp rendered in 0.96–0.97 of the time).
+                    const PixelHashes& pixel = pixels.emplace_back(pixel_hash);
                     std::array<FilmAndLens, kMaxPassSamples> points;
-                    view_.sampler->camera_points(pixel, first, view_.camera->uses_lens(),
-                                                 std::span(points.data(), count));
-                    render_samples(world_, view_, *integrator_, x, y, pixel, first,
-                                   std::span<const FilmAndLens>(points.data(), count), tally.rays,
-                                   radiances.span());
-                } else {
-                    radiances[0] = render_sample(world_, view_, *integrator_, x, y,
-                                                 SampleHashes(pixel_hash, first), tally.rays);
-                }
-                for (std::uint32_t s = first; s < first + count; ++s) {
-                    const Rgb& radiance = radiances[s - first];
-                    if (!radiance.is_finite()) {
-                        if (tally.nonfinite++ == 0) {
-                            tally.first_x = x;
-                            tally.first_y = y;
-                            tally.first_sample = s;
-                        }
-                        continue;
+                    view_.sampler->camera_points(pixel, first, lens, std::span(points.data(), count));
+                    for (std::uint32_t i = 0; i < count; ++i) {
+                        jobs.emplace_back(SampleJob{x, y, SampleHashes(pixel, first + i), points[i]});
                     }
-                    film_.add_sample(x, y, radiance);
+                } else {
+                    // A one-sample pass hashes as it goes: the same bits.
+                    const SampleHashes key(pixel_hash, first);
+                    jobs.emplace_back(SampleJob{x, y, key, camera_points(view_, key)});
                 }
             }
         }
+        render_jobs();
         if (tile_done) {
             tile_done(static_cast<std::uint64_t>(tile.x1 - tile.x0) * (tile.y1 - tile.y0) * count);
         }

@@ -65,22 +65,22 @@ Rgb render_sample(const World& world, const View& view, const Integrator& integr
     return clamped(view, integrator.radiance(world, *ray, stream, rays));
 }
 
-void render_samples(const World& world, const View& view, const Integrator& integrator, int x, int y,
-                    const PixelHashes& pixel, std::uint32_t first, std::span<const FilmAndLens> points,
-                    RayCounters& rays, std::span<Rgb> out) {
-    assert(out.size() == points.size());
-    // A pass's samples, a few at a time (a pass has at most 16 a pixel). Samples whose camera sees
-    // nothing are black and left out of the integrator's call, as render_sample leaves them.
+void render_batch(const World& world, const View& view, const Integrator& integrator,
+                  std::span<const SampleJob> jobs, RayCounters& rays, std::span<Rgb> out) {
+    assert(out.size() == jobs.size());
+    // A few samples at a time (the render loop hands at most 16). Samples whose camera sees nothing
+    // are black and left out of the integrator's call, as render_sample leaves them.
     constexpr std::size_t kTogether = 16;
-    for (std::size_t start = 0; start < points.size(); start += kTogether) {
-        const std::size_t count = std::min(kTogether, points.size() - start);
+    for (std::size_t start = 0; start < jobs.size(); start += kTogether) {
+        const std::size_t count = std::min(kTogether, jobs.size() - start);
         // The camera makes the chunk's rays together (camera_ray's, for each sample).
         Point2 film[kTogether];
         Point2 lens[kTogether];
         Ray made[kTogether];
         for (std::size_t i = 0; i < count; ++i) {
-            film[i] = film_point(view, points[start + i].film, x, y);
-            lens[i] = points[start + i].lens;
+            const SampleJob& job = jobs[start + i];
+            film[i] = film_point(view, job.points.film, job.x, job.y);
+            lens[i] = job.points.lens;
         }
         view.camera->generate_rays({film, count}, {lens, count}, {made, count});
         FixedVector<Ray, kTogether> camera_rays;
@@ -91,9 +91,7 @@ void render_samples(const World& world, const View& view, const Integrator& inte
             out[i] = Rgb{};
             if (const Ray& ray = made[i - start]; sees_scene(ray)) {
                 camera_rays.emplace_back(ray);
-                streams.emplace_back(*view.sampler,
-                                     SampleHashes(pixel, first + static_cast<std::uint32_t>(i)),
-                                     kFirstIntegratorDimension);
+                streams.emplace_back(*view.sampler, jobs[i].key, kFirstIntegratorDimension);
                 sample_of.emplace_back(i);
                 radiances.emplace_back();
             }

@@ -79,12 +79,17 @@ Rgb render_sample(const World& world, const View& view, const Integrator& integr
 // Sampler::camera_points, which a loop over a pixel's samples draws together).
 Rgb render_sample(const World& world, const View& view, const Integrator& integrator, int x, int y,
                   const SampleHashes& key, const FilmAndLens& points, RayCounters& rays);
-// Samples first … first + n − 1 of pixel (x, y) at once, given the pixel's hashes and the samples'
-// camera points (Sampler::camera_points): out[i] is exactly what render_sample gives sample first + i,
-// but the camera rays go to the integrator together (Integrator::radiances). n = points.size() =
-// out.size().
-void render_samples(const World& world, const View& view, const Integrator& integrator, int x, int y,
-                    const PixelHashes& pixel, std::uint32_t first, std::span<const FilmAndLens> points,
-                    RayCounters& rays, std::span<Rgb> out);
+// One sample of a batch (render_batch): its pixel, its key and its camera points.
+struct SampleJob {
+    int x = 0, y = 0;
+    SampleHashes key;
+    FilmAndLens points;
+};
+// Several samples at once, of one pixel or of several: out[i] is exactly what render_sample gives
+// jobs[i], but the camera makes their rays together (Camera::generate_rays) and the integrator takes
+// them together (Integrator::radiances). n = jobs.size() = out.size(); the render loop hands at most 16
+// (a pass's samples of one pixel, with keys made from its PixelHashes, or whole pixels' samples).
+void render_batch(const World& world, const View& view, const Integrator& integrator,
+                  std::span<const SampleJob> jobs, RayCounters& rays, std::span<Rgb> out);
 
 }  // namespace glint
