@@ -95,11 +95,11 @@ TEST(ProgressiveRender, APassOfSeveralSamplesGivesEachTheBitsOfRenderSample) {
     // a pass of two, 2 in a pass of six, a pixel's alone in a pass of nine), which end where the tile
     // ends. With sobol and a lens (film and lens read the cached dimensions) and a path of bounces
     // (later ones too), the film must hold, to the bit, the sum of render_sample's radiances in sample
-    // order: for 3 samples (passes 1, 2), 13 (1, 2, 4, 6) and 16 (1, 2, 4, 9), on an image of 8 × 6
-    // pixels in one tile and on one of 21 × 19 in several, whose rows and tiles are not multiples of a
-    // batch.
+    // order: for 3 samples (passes 1, 2), 13 (1, 2, 4, 6) and 16 (1, 2, 4, 9), on an image of 7 × 5
+    // pixels in one tile (35 pixels: no pass fills its last batch) and on one of 21 × 19 in several
+    // tiles of 16 × 16 (batches cross rows; the 5 × 3 corner tile ends in a partial batch).
     for (const std::uint32_t samples : {3u, 13u, 16u}) {
-        for (const auto& [width, height] : {std::pair{8, 6}, std::pair{21, 19}}) {
+        for (const auto& [width, height] : {std::pair{7, 5}, std::pair{21, 19}}) {
             const Scene scene = test::scene_from_text(
                 "render: {width: " + std::to_string(width) + ", height: " + std::to_string(height) +
                 ", samples: " + std::to_string(samples) +
@@ -374,6 +374,15 @@ TEST(ProgressiveRender, NonFiniteSamplesAreCountedAndNamedNotZeroed) {
         }
     }
     EXPECT_EQ(missing, stats.nonfinite_samples);
+    // The sample named is one that render_sample finds non-finite (the loop's batches name the pixel
+    // and sample of each result, not of another in the same batch).
+    {
+        ProgressiveRender alone(*scene.world, scene.view);
+        RayCounters rays;
+        EXPECT_FALSE(render_sample(*scene.world, scene.view, alone.integrator(), x, y,
+                                   stats.first_nonfinite_sample, rays)
+                         .is_finite());
+    }
 
     ProgressiveRender progressive(*scene.world, scene.view);
     while (!progressive.complete()) {

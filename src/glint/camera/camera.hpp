@@ -24,8 +24,9 @@ class Camera {
     // whose direction is the zero vector: see sees_scene().
     virtual Ray generate_ray(Point2 film, Point2 lens) const = 0;
     // generate_ray of several points at once: rays[i] = generate_ray(film[i], lens[i]), bit for bit (the
-    // spans are of one size). The render loop asks for up to 16 of a pixel's rays of one pass together; a
-    // camera that makes them faster together (the thin lens, four at a time in AVX2 lanes) overrides it.
+    // spans are of one size). The render loop asks for a batch's rays together (up to 16, of one pixel or of
+    // several); a camera that makes them faster together (the thin lens, four at a time in AVX2 lanes)
+    // overrides it.
     virtual void generate_rays(std::span<const Point2> film, std::span<const Point2> lens,
                                std::span<Ray> rays) const;
     // Whether generate_ray reads `lens`. The renderer draws no lens sample for a camera that does not

@@ -42,9 +42,10 @@ class Integrator {
     virtual Rgb radiance(const World& world, const Ray& ray, SampleStream& samples,
                          RayCounters& rays) const = 0;
     // The radiances along several camera rays, each path with its own stream: out[i] is exactly
-    // radiance(world, camera_rays[i], streams[i], rays). The render loop passes the camera rays of one
-    // pixel's pass together; by default they are traced one after the other, and the path tracer traces
-    // all of their first rays before it follows any path on (PathIntegrator::radiances says why).
+    // radiance(world, camera_rays[i], streams[i], rays). The render loop passes a batch's camera rays
+    // together (up to 16: one pixel's pass, or whole neighbouring pixels'); by default they are traced one
+    // after the other, and the path tracer traces all of their first rays before it follows any path on
+    // (PathIntegrator::radiances says why).
     virtual void radiances(const World& world, std::span<const Ray> camera_rays,
                            std::span<SampleStream> streams, RayCounters& rays, std::span<Rgb> out) const {
         for (std::size_t i = 0; i < camera_rays.size(); ++i) {

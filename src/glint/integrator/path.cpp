@@ -186,7 +186,7 @@ Rgb PathIntegrator::radiance(const World& world, const Ray& camera_ray, SampleSt
 void PathIntegrator::radiances(const World& world, std::span<const Ray> camera_rays,
                                std::span<SampleStream> streams, RayCounters& rays, std::span<Rgb> out) const {
     assert(streams.size() == camera_rays.size() && out.size() == camera_rays.size());
-    // Paths a few at a time, on the stack (a render loop's pass has at most 16 samples a pixel).
+    // Paths a few at a time, on the stack (the render loop hands at most 16).
     constexpr std::size_t kTogether = 16;
     for (std::size_t start = 0; start < camera_rays.size(); start += kTogether) {
         const std::size_t count = std::min(kTogether, camera_rays.size() - start);

@@ -23,10 +23,10 @@ class PathIntegrator final : public Integrator {
         : max_depth_(max_depth), learn_light_visibility_(learn_light_visibility) {}
     Rgb radiance(const World& world, const Ray& ray, SampleStream& samples, RayCounters& rays) const override;
     // All the camera rays first, one after the other, then each path on from its first hit. Rays of one
-    // pixel take nearly the same way through the scene's BVH, so that the later ones find the branches
-    // of that way predicted and their nodes in cache, and their latencies overlap; the paths' later
-    // bounces go every way, and interleaving those (two paths in lockstep) made the Cornell boxes
-    // slower. RTIOW's final scene renders in 0.945 of the time (bench/ab.py; docs/benchmarks.md).
+    // pixel, or of neighbouring pixels, take nearly the same way through the scene's BVH, so that the later
+    // ones find the branches of that way predicted and their nodes in cache, and their latencies overlap; the
+    // paths' later bounces go every way, and interleaving those (two paths in lockstep) made the Cornell
+    // boxes slower. RTIOW's final scene renders in 0.945 of the time (bench/ab.py; docs/benchmarks.md).
     void radiances(const World& world, std::span<const Ray> camera_rays, std::span<SampleStream> streams,
                    RayCounters& rays, std::span<Rgb> out) const override;
     // A copy that samples the sphere lights with what LightVisibility learns of this view; nullptr

@@ -95,12 +95,13 @@ std::uint32_t ProgressiveRender::next_pass_samples() const {
         return remaining;
     }
     // The growing passes add up to 2^k - 1, so a power-of-two target, the usual one, ended in a pass of
-    // one sample (from 4 samples on): a whole pass over the image for it, then without the batches of the
-    // others (RTIOW at 4 spp: 0.946 of the time with the merge). A remainder of at most half a pass is
-    // taken with this pass when both fit in one. (Since a one-sample pass is batched across pixels too,
-    // the merge is within noise: RTIOW at 16 spp took 0.987 (0.955–1.046) of the time without it.)
-    // (Beyond that, splitting them evenly, 32 samples as 1 + 2 + 4 + 8 + 8 + 9, cost a pass's
-    // per-pixel set-up more than the one-sample pass of 1 + 2 + 4 + 8 + 16 + 1 cost: 1.019 of RTIOW's time.)
+    // one sample (from 4 samples on): a whole pass over the image for it. A remainder of at most half a
+    // pass is taken with this pass when both fit in one. (When it was made, a one-sample pass took its
+    // samples one at a time, and the merge gave RTIOW at 4 spp 0.946 of the time. Now that such a pass is
+    // batched across pixels, the merge is within noise: RTIOW at 16 spp took 0.987 (0.955–1.046) of the
+    // time without it.) (Beyond that, splitting them evenly, 32 samples as 1 + 2 + 4 + 8 + 8 + 9, cost a
+    // pass's per-pixel set-up more than the one-sample pass of 1 + 2 + 4 + 8 + 16 + 1 cost: 1.019 of RTIOW's
+    // time.)
     if (remaining <= kMaxPassSamples && 2 * (remaining - growing) <= growing) {
         return remaining;
     }
@@ -124,7 +125,8 @@ bool ProgressiveRender::next_pass(const CancelCheck& cancelled, const TileDone& 
         // pixel took its samples one at a time and a pass of two took them in pairs, and on RTIOW's final
         // scene each of their samples cost 1.2–1.3 times one of a pass of 16.
         FixedVector<SampleJob, kMaxPassSamples> jobs;
-        // The batch's pixels' hashes, to which its keys refer (a pass of several samples a pixel).
+        // The batch's pixels' hashes, to which its keys refer: only in a pass of two or more samples a
+        // pixel, so a batch has at most kMaxPassSamples / 2 of them.
         FixedVector<PixelHashes, kMaxPassSamples / 2> pixels;
         const auto render_jobs = [&] {
             FixedVector<Rgb, kMaxPassSamples> radiances;

@@ -87,8 +87,9 @@ struct SampleJob {
 };
 // Several samples at once, of one pixel or of several: out[i] is exactly what render_sample gives
 // jobs[i], but the camera makes their rays together (Camera::generate_rays) and the integrator takes
-// them together (Integrator::radiances). n = jobs.size() = out.size(); the render loop hands at most 16
-// (a pass's samples of one pixel, with keys made from its PixelHashes, or whole pixels' samples).
+// them together (Integrator::radiances). n = jobs.size() = out.size(); the render loop hands at most 16,
+// whole pixels' samples of one pass (their keys made from each pixel's PixelHashes, but in a pass of one
+// sample, which hashes as it goes).
 void render_batch(const World& world, const View& view, const Integrator& integrator,
                   std::span<const SampleJob> jobs, RayCounters& rays, std::span<Rgb> out);
 
