@@ -70,6 +70,26 @@ TEST(Sphere, SphereBehindTheRayIsMissed) {
     EXPECT_FALSE(s.occluded({{0, 0, 0}, {0, 0, 1}}, kInf));
 }
 
+TEST(Sphere, RaysGoingAwayFromTheCentreHitOnlyFromInside) {
+    // From outside or on the surface, a ray going away from the centre misses without the roots being
+    // solved (sphere_roots' early answer); from inside, it meets the far side.
+    const Sphere s({1, 2, 3}, 2);
+    Hit hit;
+    const Vec3 away = normalize(Vec3{1, 0.5, -0.25});
+    EXPECT_FALSE(s.intersect({Vec3{1, 2, 3} + 2.5 * away, away}, kInf, hit));  // outside
+    EXPECT_FALSE(s.occluded({Vec3{1, 2, 3} + 2.5 * away, away}, kInf));
+    EXPECT_FALSE(s.intersect({{3, 2, 3}, {1, 0, 0}}, kInf, hit));  // on the surface (c = 0 exactly)
+    EXPECT_FALSE(s.intersect({{3, 2, 3}, {1, 1, 0}}, kInf, hit));  // on it, leaving obliquely
+    ASSERT_TRUE(s.intersect({{3, 2, 3}, {-1, 0, 0}}, kInf, hit));  // on it, going in: the far side
+    EXPECT_DOUBLE_EQ(hit.t, 4.0);
+    // Inside, off the centre, going away from it (h > 0, c < 0): the far side, ahead.
+    ASSERT_TRUE(s.intersect({{2, 2, 3}, {1, 0, 0}}, kInf, hit));
+    EXPECT_DOUBLE_EQ(hit.t, 1.0);
+    EXPECT_TRUE(s.occluded({{2, 2, 3}, {1, 0, 0}}, 1.5));
+    ASSERT_TRUE(s.intersect(Ray{Vec3{1, 2, 3} + 1.5 * away, away}, kInf, hit));
+    EXPECT_NEAR(hit.t, 0.5, 1e-15);
+}
+
 TEST(Sphere, TangentRayTouchesOnceAndAMissMisses) {
     const Sphere s({0, 0, 0}, 1);
     Hit hit;

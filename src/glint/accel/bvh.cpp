@@ -152,9 +152,11 @@ __attribute__((target("avx2"))) inline void test_sphere_lanes(const double* reco
     lanes.sphere = static_cast<unsigned>(_mm256_movemask_pd(is_sphere));
     lanes.hit = 0;
     lanes.other = 0;
-    // Most groups miss every sphere: skip the square root and the divisions then, as the scalar code
-    // returns early.
-    if (_mm256_movemask_pd(_mm256_and_pd(not_missed, is_sphere)) == 0) {
+    // Most groups miss every sphere, or leave it behind from outside (h > 0, c ≥ 0: both roots negative):
+    // skip the square root and the divisions then, as the scalar code returns early.
+    const __m256d left_behind = _mm256_and_pd(_mm256_cmp_pd(h, _mm256_setzero_pd(), _CMP_GT_OQ),
+                                              _mm256_cmp_pd(c, _mm256_setzero_pd(), _CMP_GE_OQ));
+    if (_mm256_movemask_pd(_mm256_andnot_pd(left_behind, _mm256_and_pd(not_missed, is_sphere))) == 0) {
         return;
     }
     const __m256d sign_bit = _mm256_set1_pd(-0.0);
