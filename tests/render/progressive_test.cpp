@@ -88,6 +88,32 @@ TEST(ProgressiveRender, PassesGrowAndLeaveNoSmallLastPass) {
     }
 }
 
+// Renders `jobs` at once with render_batch and checks that each sample gets, to the bit, what
+// render_sample gives it alone, and that the same rays are counted. `alone` receives render_sample's
+// radiances, for the caller's own counts; `what` names the case in failures. (Fatal failures return from
+// here: callers wrap the call in ASSERT_NO_FATAL_FAILURE.)
+void check_batch_gives_render_sample_bits(const Scene& scene, const Integrator& traced,
+                                          const std::vector<SampleJob>& jobs, const std::string& what,
+                                          std::vector<Rgb>& alone) {
+    // NaN, so that a sample render_batch leaves unwritten fails.
+    std::vector<Rgb> together(jobs.size(), Rgb(std::numeric_limits<double>::quiet_NaN()));
+    RayCounters rays_together;
+    render_batch(*scene.world, scene.view, traced, jobs, rays_together, together);
+    RayCounters rays_alone;
+    alone.clear();
+    for (std::size_t i = 0; i < jobs.size(); ++i) {
+        const SampleJob& job = jobs[i];
+        alone.push_back(
+            render_sample(*scene.world, scene.view, traced, job.x, job.y, job.key.sample(), rays_alone));
+        ASSERT_EQ(together[i].r, alone[i].r) << what << ", sample " << i;
+        ASSERT_EQ(together[i].g, alone[i].g) << what << ", sample " << i;
+        ASSERT_EQ(together[i].b, alone[i].b) << what << ", sample " << i;
+    }
+    ASSERT_EQ(rays_together.camera, rays_alone.camera) << what;
+    ASSERT_EQ(rays_together.shadow, rays_alone.shadow) << what;
+    ASSERT_EQ(rays_together.secondary, rays_alone.secondary) << what;
+}
+
 TEST(ProgressiveRender, APassOfSeveralSamplesGivesEachTheBitsOfRenderSample) {
     // A pass of two or more samples hashes each pixel's dimensions once (PixelHashes) and hands the
     // samples keys that read them; a one-sample pass and render_sample hash as they go. The passes go to
@@ -160,7 +186,8 @@ TEST(ProgressiveRender, ABatchOfSeveralPixelsGivesEachSampleTheBitsOfRenderSampl
         const Integrator& traced = progressive.integrator();
         int unseen = 0;
         for (std::size_t count = 1; count <= 20; ++count) {
-            // Pixels in row order from (count mod 7, 0), each with sample (pixel index mod 3).
+            // Pixels in row order from pixel number `count` (x = n mod 7, y = n / 7), the i-th with sample
+            // i mod 3.
             std::vector<SampleJob> jobs;
             for (std::size_t i = 0; i < count; ++i) {
                 const int pixel = static_cast<int>((count + i) % 35);
@@ -171,22 +198,12 @@ TEST(ProgressiveRender, ABatchOfSeveralPixelsGivesEachSampleTheBitsOfRenderSampl
                     static_cast<std::uint32_t>(i % 3));
                 jobs.push_back(SampleJob{x, y, key, camera_points(scene.view, key)});
             }
-            std::vector<Rgb> together(count, Rgb(std::numeric_limits<double>::quiet_NaN()));
-            RayCounters rays_together;
-            render_batch(*scene.world, scene.view, traced, jobs, rays_together, together);
-            RayCounters rays_alone;
-            for (std::size_t i = 0; i < count; ++i) {
-                const SampleJob& job = jobs[i];
-                const Rgb alone = render_sample(*scene.world, scene.view, traced, job.x, job.y,
-                                                job.key.sample(), rays_alone);
-                ASSERT_EQ(together[i].r, alone.r) << count << ", " << i;
-                ASSERT_EQ(together[i].g, alone.g) << count << ", " << i;
-                ASSERT_EQ(together[i].b, alone.b) << count << ", " << i;
+            std::vector<Rgb> alone;
+            ASSERT_NO_FATAL_FAILURE(check_batch_gives_render_sample_bits(
+                scene, traced, jobs, "a batch of " + std::to_string(count), alone));
+            for (const SampleJob& job : jobs) {
                 unseen += camera_ray(scene.view, job.points, job.x, job.y) ? 0 : 1;
             }
-            ASSERT_EQ(rays_together.camera, rays_alone.camera);
-            ASSERT_EQ(rays_together.shadow, rays_alone.shadow);
-            ASSERT_EQ(rays_together.secondary, rays_alone.secondary);
         }
         if (camera == fisheye) {
             EXPECT_GT(unseen, 0);  // the batches held samples the camera does not see
@@ -241,32 +258,21 @@ TEST(ProgressiveRender, SamplesTakenTogetherAreEachRenderSamplesBits) {
                             std::vector<FilmAndLens> points(count);
                             scene.view.sampler->camera_points(pixel, first, scene.view.camera->uses_lens(),
                                                               points);
-                            // NaN, so that a sample render_batch leaves unwritten fails.
-                            std::vector<Rgb> together(count, Rgb(std::numeric_limits<double>::quiet_NaN()));
-                            RayCounters rays_together;
                             std::vector<SampleJob> jobs;
                             for (std::uint32_t i = 0; i < count; ++i) {
                                 jobs.push_back(SampleJob{x, y, SampleHashes(pixel, first + i), points[i]});
                             }
-                            render_batch(*scene.world, scene.view, traced, jobs, rays_together, together);
-                            RayCounters rays_alone;
+                            std::vector<Rgb> alone;
+                            ASSERT_NO_FATAL_FAILURE(check_batch_gives_render_sample_bits(
+                                scene, traced, jobs,
+                                std::string(integrator) + " " + std::to_string(x) + ", " + std::to_string(y),
+                                alone));
                             int unseen = 0;
                             for (std::uint32_t i = 0; i < count; ++i) {
-                                const Rgb alone = render_sample(*scene.world, scene.view, traced, x, y,
-                                                                first + i, rays_alone);
-                                ASSERT_EQ(together[i].r, alone.r)
-                                    << integrator << " " << x << ", " << y << ", " << i;
-                                ASSERT_EQ(together[i].g, alone.g)
-                                    << integrator << " " << x << ", " << y << ", " << i;
-                                ASSERT_EQ(together[i].b, alone.b)
-                                    << integrator << " " << x << ", " << y << ", " << i;
                                 unseen += camera_ray(scene.view, points[i], x, y) ? 0 : 1;
-                                clamped += alone.max_component() == 0.5 ? 1 : 0;
+                                clamped += alone[i].max_component() == 0.5 ? 1 : 0;
                             }
                             mixed_pixels += unseen > 0 && unseen < static_cast<int>(count) ? 1 : 0;
-                            ASSERT_EQ(rays_together.camera, rays_alone.camera);
-                            ASSERT_EQ(rays_together.shadow, rays_alone.shadow);
-                            ASSERT_EQ(rays_together.secondary, rays_alone.secondary);
                         }
                     }
                 }
