@@ -12,7 +12,7 @@ one run, alternating the two renderers (the machine is shared and noisy; medians
      disturbs less);
   2. the time to equal RMSE against a high-sample reference that the peer makes itself (two halves
      with different seeds, whose difference estimates the reference's own noise, subtracted from
-     every measured MSE), from fits of log RMSE on log time;
+     every measured MSE), from fits of log RMSE on log time (a quadratic, and lines beside it);
   3. that glint converges to the peer's image: 16x16-pixel block means, z-scores against the noise of
      both sides (each estimated from two independent halves);
   4. the shading overhead: glint's whole-render rays/s against bench/accel's kernel rays/s.
@@ -253,6 +253,32 @@ def time_for(model, target):
     return math.exp((math.log(target) - a) / b)
 
 
+def fit_curve(xs, rmses):
+    """log RMSE = a + b log x + c (log x)^2 by least squares: (a, b, c), with c = 0 when there are fewer
+    than three distinct x. The line of fit() takes the curve for a power law; the peers' curves are one,
+    glint's are not (docs/benchmarks.md: its sampler's stratification pays more at low spp, so its slope
+    flattens as the spp rise), and the line through them overestimated glint's time to the target."""
+    x, y = np.log(xs), np.log(rmses)
+    if len(set(np.round(x, 12))) < 3:
+        a, b = fit(xs, rmses)['free']
+        return a, b, 0.0
+    c, b, a = np.polyfit(x, y, 2)
+    return float(a), float(b), float(c)
+
+
+def x_for_curve(model, target, near):
+    """The x at which the curve reaches `target`: the root of the quadratic in log x nearest log(near)
+    (the line's answer), or `near` itself when the curve never reaches the target."""
+    a, b, c = model
+    if abs(c) < 1e-12:
+        return math.exp((math.log(target) - a) / b)
+    disc = b * b - 4 * c * (a - math.log(target))
+    if disc < 0:
+        return near
+    roots = [(-b + sign * math.sqrt(disc)) / (2 * c) for sign in (1, -1)]
+    return math.exp(min(roots, key=lambda u: abs(u - math.log(near))))
+
+
 def block_stats(mean, var):
     """Block means of an image and the variance of each, from per-pixel variances of the mean."""
     h, w = mean.shape[0] // BLOCK * BLOCK, mean.shape[1] // BLOCK * BLOCK
@@ -384,17 +410,23 @@ def measure_scene(key, cfg, runs, peer, glint_one, glint_all=None, bvh_peer=None
                                    'rmse': rmse_against(image, ref_mean, ref_var)})
     fits = {n: fit([p['wall'] for p in pts], [p['rmse'] for p in pts]) for n, pts in points.items()}
     spp_fits = {n: fit([p['spp'] for p in pts], [p['rmse'] for p in pts]) for n, pts in points.items()}
+    curves = {n: fit_curve([p['wall'] for p in pts], [p['rmse'] for p in pts]) for n, pts in points.items()}
+    spp_curves = {n: fit_curve([p['spp'] for p in pts], [p['rmse'] for p in pts]) for n, pts in points.items()}
     at_target = [p['rmse'] for p in points[peer.name] if p['spp'] == cfg['target']]
     target = median(at_target)
     needed = {}
     for n, pts in points.items():
         walls = [p['wall'] for p in pts]
         t_free, t_half = time_for(fits[n]['free'], target), time_for(fits[n]['half'], target)
-        needed[n] = {'free': t_free, 'half': t_half,
+        spp_free = time_for(spp_fits[n]['free'], target)
+        t_curve = x_for_curve(curves[n], target, t_free)
+        needed[n] = {'free': t_free, 'half': t_half, 'curve': t_curve,
                      'extrapolated': not (0.8 * min(walls) <= t_free <= 1.25 * max(walls)),
-                     'slope_free': fits[n]['free'][1],
-                     'spp_needed': time_for(spp_fits[n]['free'], target),
-                     'spp_needed_half': time_for(spp_fits[n]['half'], target)}
+                     'extrapolated_curve': not (0.8 * min(walls) <= t_curve <= 1.25 * max(walls)),
+                     'slope_free': fits[n]['free'][1], 'curvature': curves[n][2],
+                     'spp_needed': spp_free,
+                     'spp_needed_half': time_for(spp_fits[n]['half'], target),
+                     'spp_needed_curve': x_for_curve(spp_curves[n], target, spp_free)}
     # glint on all cores renders the same samples (same bits whatever the threads), so its RMSE at
     # each spp is glint-1-thread's: its time to the target is its time per spp x glint's spp needed.
     derived = {}
@@ -424,10 +456,19 @@ def measure_scene(key, cfg, runs, peer, glint_one, glint_all=None, bvh_peer=None
         if g is None:   # glint on all cores: glint-1's spp needed at its own time per spp
             base = needed[derived[other_name]]
             per_spp = g_wall / cfg['equal']
-            g = dict(base, free=per_spp * base['spp_needed'], half=per_spp * base['spp_needed_half'])
+            g = dict(base, free=per_spp * base['spp_needed'], half=per_spp * base['spp_needed_half'],
+                     curve=per_spp * base['spp_needed_curve'])
             entry['note'] += ('; ' if entry['note'] else '') + \
                 f'{other_name}: RMSE per spp taken from {derived[other_name]} (same samples), time per spp its own'
         entry.update({
+            # From the curves (fit_curve): the ratio the targets are read from. The lines' ratios follow,
+            # as before.
+            'peer_time_to_target_curve_s': peer_needed['curve'], 'glint_time_to_target_curve_s': g['curve'],
+            'equal_rmse_ratio_curve': peer_needed['curve'] / g['curve'],
+            'peer_spp_needed_curve': peer_needed['spp_needed_curve'],
+            'glint_spp_needed_curve': g['spp_needed_curve'],
+            'peer_curvature': peer_needed['curvature'], 'glint_curvature': g['curvature'],
+            'extrapolated_curve': bool(peer_needed['extrapolated_curve'] or g['extrapolated_curve']),
             'peer_time_to_target_s': peer_needed['free'], 'glint_time_to_target_s': g['free'],
             'equal_rmse_ratio': peer_needed['free'] / g['free'],
             'equal_rmse_ratio_slope_half': peer_needed['half'] / g['half'],
@@ -461,7 +502,8 @@ def measure_scene(key, cfg, runs, peer, glint_one, glint_all=None, bvh_peer=None
                     g32img.append((None, res.err))
         per_spp = median(bvh_times) / 32
         base = needed[peer.name]
-        bvh_needed = dict(base, free=per_spp * base['spp_needed'], half=per_spp * base['spp_needed_half'])
+        bvh_needed = dict(base, free=per_spp * base['spp_needed'], half=per_spp * base['spp_needed_half'],
+                          curve=per_spp * base['spp_needed_curve'])
         saved = times[glint_one.name], cpu[glint_one.name], images[glint_one.name]
         times[glint_one.name], cpu[glint_one.name], images[glint_one.name] = g32, g32cpu, g32img
         entry = pair(glint_one.name, bvh_peer.name, bvh_times, bvh_cpu, bvh_needed,
@@ -628,17 +670,18 @@ def main():
     log(f'\n== bench-peers ({args.mode} mode, medians of {runs} alternating runs; ratios peer/glint: > 1 means '
         'glint is faster)')
     log(f'{"pair":24s} {"scene":14s} {"spp":>4s} {"eq-spp wall":>11s} {"(cpu)":>6s} {"eq-RMSE":>8s} '
-        f'{"(slope -1/2)":>12s} {"slopes peer/glint":>17s}  convergence')
+        f'{"(line)":>8s} {"(slope -1/2)":>12s} {"slopes peer/glint":>17s}  convergence')
     for scene, r in results['scenes'].items():
         for name, p in r['pairs'].items():
             c = p['convergence']
             log(f'{name:24s} {scene:14s} {p["spp"]:4d} {p["equal_spp_ratio"]:11.2f} {p["equal_spp_cpu_ratio"]:6.2f} '
+                f'{p["equal_rmse_ratio_curve"]:7.2f}{"*" if p["extrapolated_curve"] else " "} '
                 f'{p["equal_rmse_ratio"]:7.2f}{"*" if p["extrapolated"] else " "} '
                 f'{p["equal_rmse_ratio_slope_half"]:12.2f} {p["peer_slope"]:8.2f}/{p["glint_slope"]:<8.2f}  '
                 f'{"PASS" if c["pass"] else "FAIL"} (max|z| {c["max_abs_z"]:.1f}, {c["beyond_4sigma"]}/{c["blocks"]} > 4σ)')
-    log('eq-RMSE: time to reach the peer\'s RMSE at its target spp (table above, per scene), from the fits of '
-        'log RMSE on log wall time (free slope; * = outside the measured times); slope -1/2: the same with the '
-        'slope fixed. cpu: the CPU-time ratio at equal spp.')
+    log('eq-RMSE: time to reach the peer\'s RMSE at its target spp (table above, per scene), from a quadratic '
+        'in log wall time fitted to log RMSE (* = outside the measured times); line: from a straight line (free '
+        'slope); slope -1/2: a line of slope fixed at -1/2. cpu: the CPU-time ratio at equal spp.')
     for name, p in [(n, p) for r in results['scenes'].values() for n, p in r['pairs'].items() if p['note']]:
         log(f'note ({name}): {p["note"]}')
     log(f'results: {os.path.relpath(os.path.join(OUT, "results.json"), ROOT)}; '
