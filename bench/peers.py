@@ -271,7 +271,7 @@ def x_for_curve(model, target, near):
     (the line's answer), or `near` itself when the curve never reaches the target."""
     a, b, c = model
     if abs(c) < 1e-12:
-        return math.exp((math.log(target) - a) / b)
+        return time_for((a, b), target)
     disc = b * b - 4 * c * (a - math.log(target))
     if disc < 0:
         return near
@@ -417,12 +417,14 @@ def measure_scene(key, cfg, runs, peer, glint_one, glint_all=None, bvh_peer=None
     needed = {}
     for n, pts in points.items():
         walls = [p['wall'] for p in pts]
+
+        def outside(t):  # beyond the measured times (with a margin): an extrapolation
+            return not (0.8 * min(walls) <= t <= 1.25 * max(walls))
         t_free, t_half = time_for(fits[n]['free'], target), time_for(fits[n]['half'], target)
         spp_free = time_for(spp_fits[n]['free'], target)
         t_curve = x_for_curve(curves[n], target, t_free)
         needed[n] = {'free': t_free, 'half': t_half, 'curve': t_curve,
-                     'extrapolated': not (0.8 * min(walls) <= t_free <= 1.25 * max(walls)),
-                     'extrapolated_curve': not (0.8 * min(walls) <= t_curve <= 1.25 * max(walls)),
+                     'extrapolated': outside(t_free), 'extrapolated_curve': outside(t_curve),
                      'slope_free': fits[n]['free'][1], 'curvature': curves[n][2],
                      'spp_needed': spp_free,
                      'spp_needed_half': time_for(spp_fits[n]['half'], target),
