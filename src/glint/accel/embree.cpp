@@ -128,11 +128,12 @@ bool embree_can_trace(const RTCRay& r) {
 
 }  // namespace
 
-EmbreeAccelerator::EmbreeAccelerator(std::span<const Shape* const> shapes)
+EmbreeAccelerator::EmbreeAccelerator(std::span<const Shape* const> shapes, const std::string& device_config)
     : shapes_(shapes.begin(), shapes.end()) {
-    device_ = rtcNewDevice(nullptr);
+    device_ = rtcNewDevice(device_config.empty() ? nullptr : device_config.c_str());
     if (device_ == nullptr) {
-        throw std::runtime_error("Embree: cannot create a device");
+        throw std::runtime_error("Embree: cannot create a device" +
+                                 (device_config.empty() ? std::string() : " with '" + device_config + "'"));
     }
     scene_ = rtcNewScene(device_);
     // Robust: Embree's watertight mode, so that its answers can be compared with the BVH's.

@@ -14,6 +14,8 @@
 
 #include <embree3/rtcore.h>
 
+#include <string>
+
 #include "glint/accel/accelerator.hpp"
 
 namespace glint {
@@ -26,7 +28,10 @@ class EmbreeAccelerator final : public Accelerator {
     // rtcCommitScene documentation), so a shape whose box reaches beyond it is not given to Embree.
     static constexpr double kEmbreeLargest = 1.844e18;
 
-    explicit EmbreeAccelerator(std::span<const Shape* const> shapes);
+    // `device_config`: Embree's device configuration string (rtcNewDevice), empty for its defaults. Embree
+    // picks the widest instruction set it was built for that the CPU has (AVX-512 on such CPUs, with
+    // Debian's Embree); "isa=avx2" holds it to AVX2, glint's own traversal's (bench/accel.cpp races both).
+    explicit EmbreeAccelerator(std::span<const Shape* const> shapes, const std::string& device_config = "");
     ~EmbreeAccelerator() override;
     EmbreeAccelerator(const EmbreeAccelerator&) = delete;
     EmbreeAccelerator& operator=(const EmbreeAccelerator&) = delete;
