@@ -10,6 +10,15 @@
 // repeated:
 //   ./build/release/bench/glint_bench_accel [--benchmark_repetitions=3]
 //
+// On a machine whose speed drifts from one second to the next (a shared VM), one run's ratio can be
+// off by 20 %. `--pairs=N` races the two instead in N rounds: in each, glint's BVH and Embree trace
+// the same ray set back to back, in alternating order, and the round gives one ratio; it prints the
+// median of each ray set's N ratios with a 95 % interval (order statistics of the median, no assumption
+// on the noise's distribution). `--embree-config=STRING` passes STRING to Embree's rtcNewDevice:
+// Embree uses its AVX-512 kernels where the CPU has them, glint's traversal AVX2, so `isa=avx2` races
+// like with like. `--benchmark_filter` selects the ray sets in both modes:
+//   ./build/release/bench/glint_bench_accel --pairs=15 --benchmark_filter='Rays/(bunny|dragon1.6M)/diffuse'
+//
 // The bunny and the dragon are optional data (not in the repository): they are read from
 // $GLINT_DATA_DIR/meshes, else from the shared/data folder beside the repository. When they are not
 // there, generated meshes of similar size stand in, under their own names (blob82k, blob1.3M: a bumpy
@@ -19,13 +28,17 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <cassert>
+#include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
 #include <map>
 #include <optional>
 #include <random>
+#include <regex>
 #include <stdexcept>
 
 #include "glint/accel/bvh.hpp"
@@ -43,6 +56,9 @@ using namespace glint;
 
 constexpr int kThreads = 2;
 constexpr std::size_t kRaysPerSet = 1 << 16;
+
+// --embree-config: Embree's device configuration (empty: its defaults).
+std::string embree_config;
 
 // One of the three kinds of query; shadow rays ask occluded() with t_max = 1 (the light).
 struct RaySet {
@@ -259,7 +275,7 @@ std::unique_ptr<BenchScene> cornell_scene() {
     }
     scene->bvh = std::make_unique<BvhAccelerator>(scene->pointers);
 #ifdef GLINT_HAVE_EMBREE
-    scene->embree = std::make_unique<EmbreeAccelerator>(scene->pointers);
+    scene->embree = std::make_unique<EmbreeAccelerator>(scene->pointers, embree_config);
 #endif
     const auto* light = dynamic_cast<const AreaLight*>(built.world->lights.at(0).get());
     if (light == nullptr) {
@@ -288,7 +304,7 @@ std::unique_ptr<BenchScene> finish(std::unique_ptr<BenchScene> scene, bool with_
     scene->bvh = std::make_unique<BvhAccelerator>(scene->pointers);
 #ifdef GLINT_HAVE_EMBREE
     if (with_embree) {
-        scene->embree = std::make_unique<EmbreeAccelerator>(scene->pointers);
+        scene->embree = std::make_unique<EmbreeAccelerator>(scene->pointers, embree_config);
     }
 #else
     (void)with_embree;
@@ -340,6 +356,26 @@ BenchScene& scene(const std::string& name) {
     return *slot;
 }
 
+// Traces every ray of `set` on the arena's threads; returns how many hit.
+std::uint64_t trace_all(tbb::task_arena& arena, const Accelerator& accel, const RaySet& set) {
+    std::atomic<std::uint64_t> found{0};
+    arena.execute([&] {
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, set.rays.size(), 1024), [&](const auto& range) {
+            std::uint64_t local = 0;
+            for (std::size_t i = range.begin(); i < range.end(); ++i) {
+                if (set.shadow) {
+                    local += accel.occluded(set.rays[i], 1.0) ? 1 : 0;
+                } else {
+                    Hit hit;
+                    local += accel.intersect(set.rays[i], kInf, hit) ? 1 : 0;
+                }
+            }
+            found += local;
+        });
+    });
+    return found;
+}
+
 void BM_Rays(benchmark::State& state, const std::string& scene_name, const std::string& kind, bool embree) {
     BenchScene& s = scene(scene_name);
     const Accelerator* accel = embree ? s.embree.get() : s.bvh.get();
@@ -351,24 +387,8 @@ void BM_Rays(benchmark::State& state, const std::string& scene_name, const std::
     tbb::task_arena arena(kThreads);
     std::uint64_t rays = 0, hits = 0;
     for (auto _ : state) {
-        std::atomic<std::uint64_t> found{0};
-        arena.execute([&] {
-            tbb::parallel_for(tbb::blocked_range<std::size_t>(0, set.rays.size(), 1024),
-                              [&](const auto& range) {
-                                  std::uint64_t local = 0;
-                                  for (std::size_t i = range.begin(); i < range.end(); ++i) {
-                                      if (set.shadow) {
-                                          local += accel->occluded(set.rays[i], 1.0) ? 1 : 0;
-                                      } else {
-                                          Hit hit;
-                                          local += accel->intersect(set.rays[i], kInf, hit) ? 1 : 0;
-                                      }
-                                  }
-                                  found += local;
-                              });
-        });
+        hits = trace_all(arena, *accel, set);
         rays += set.rays.size();
-        hits = found;
     }
     state.counters["Mrays/s"] =
         benchmark::Counter(static_cast<double>(rays) * 1e-6, benchmark::Counter::kIsRate);
@@ -443,6 +463,86 @@ class RatioReporter : public benchmark::ConsoleReporter {
     std::map<std::string, double> rates;
 };
 
+// The 95 % interval of the median of n values, as indices into them sorted: order statistics k and
+// n − 1 − k, with k the largest for which 1 − 2 P(X ≤ k) ≥ 0.95, X ~ Binomial(n, ½) being how many of
+// the values fall below the true median (the interval misses it when k or fewer fall below it, or k or
+// fewer above). Holds whatever the values' distribution; needs n ≥ 6.
+std::pair<std::size_t, std::size_t> median_interval(std::size_t n) {
+    // P(X ≤ k) for X ~ Binomial(n, ½), summed term by term (n is small).
+    auto below = [n](std::size_t k) {
+        double term = std::ldexp(1.0, -static_cast<int>(n));  // P(X = 0)
+        double sum = term;
+        for (std::size_t i = 1; i <= k; ++i) {
+            term *= static_cast<double>(n - i + 1) / static_cast<double>(i);
+            sum += term;
+        }
+        return sum;
+    };
+    std::size_t k = 0;
+    while (2 * below(k + 1) <= 0.05) {
+        ++k;
+    }
+    return {k, n - 1 - k};
+}
+
+// --pairs=N: glint's BVH and Embree on each selected ray set, N rounds of the two back to back
+// (alternating which goes first), and the median of the rounds' rays/s ratios with its interval.
+int run_pairs(int rounds, const std::string& filter) {
+    if (rounds < 6) {
+        std::fprintf(stderr, "--pairs: at least 6 rounds, for a 95 %% interval of the median\n");
+        return 2;
+    }
+    const std::regex selected(filter.empty() || filter == "all" ? "." : filter);
+    tbb::task_arena arena(kThreads);
+    const auto [low, high] = median_interval(static_cast<std::size_t>(rounds));
+    std::printf(
+        "bvh / embree, rays/s ratio (%d threads), %d rounds of the two back to back: median "
+        "[95 %% interval]%s%s\n",
+        kThreads, rounds, embree_config.empty() ? "" : "; Embree's device: ", embree_config.c_str());
+    for (const std::string& name :
+         {small_mesh().name, large_mesh().name, std::string("spheres100k"), std::string("cornell")}) {
+        for (const char* kind : {"primary", "diffuse", "shadow"}) {
+            const std::string label = "Rays/" + name + "/" + kind;
+            // Either of the pair's names as Google Benchmark's runs have them.
+            if (!std::regex_search(label + "/bvh/real_time", selected) &&
+                !std::regex_search(label + "/embree/real_time", selected)) {
+                continue;
+            }
+            BenchScene& s = scene(name);
+            if (!s.embree) {
+                std::printf("  %-28s Embree is not built in\n", label.c_str());
+                continue;
+            }
+            const RaySet& set = s.ray_sets.at(kind);
+            auto seconds = [&](const Accelerator& accel) {
+                const auto start = std::chrono::steady_clock::now();
+                benchmark::DoNotOptimize(trace_all(arena, accel, set));
+                return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            };
+            seconds(*s.bvh);  // warm: caches, and the threads started
+            seconds(*s.embree);
+            std::vector<double> ratios;
+            for (int r = 0; r < rounds; ++r) {
+                double bvh = 0, embree = 0;
+                if (r % 2 == 0) {
+                    bvh = seconds(*s.bvh);
+                    embree = seconds(*s.embree);
+                } else {
+                    embree = seconds(*s.embree);
+                    bvh = seconds(*s.bvh);
+                }
+                ratios.push_back(embree / bvh);  // rays/s of the BVH over Embree's
+            }
+            std::sort(ratios.begin(), ratios.end());
+            const double median = rounds % 2 == 1
+                                      ? ratios[ratios.size() / 2]
+                                      : (ratios[ratios.size() / 2 - 1] + ratios[ratios.size() / 2]) / 2;
+            std::printf("  %-28s %.2f [%.2f, %.2f]\n", label.c_str(), median, ratios[low], ratios[high]);
+        }
+    }
+    return 0;
+}
+
 // How many times slower a ray is in the larger scene.
 void print_growth(const std::map<std::string, double>& rates, const std::string& small,
                   const std::string& large, const char* label) {
@@ -457,10 +557,28 @@ void print_growth(const std::map<std::string, double>& rates, const std::string&
 
 int main(int argc, char** argv) {
     benchmark::Initialize(&argc, argv);
+    int pairs = 0;
+    for (int i = 1; i < argc; ++i) {
+        const std::string arg = argv[i];
+        if (arg.starts_with("--pairs=")) {
+            pairs = std::atoi(arg.c_str() + 8);
+        } else if (arg.starts_with("--embree-config=")) {
+            embree_config = arg.substr(16);
+        } else {
+            std::fprintf(stderr,
+                         "unknown argument '%s' (expected --pairs=N, --embree-config=STRING or "
+                         "Google Benchmark's --benchmark_* flags)\n",
+                         argv[i]);
+            return 2;
+        }
+    }
     for (const MeshSource* source : {&small_mesh(), &large_mesh()}) {
         if (!source->note.empty()) {
             std::printf("%s\n", source->note.c_str());
         }
+    }
+    if (pairs != 0) {
+        return run_pairs(pairs, benchmark::GetBenchmarkFilter());
     }
     register_all();
     RatioReporter reporter;
