@@ -30,6 +30,7 @@
 
 #include <algorithm>
 #include <cassert>
+#include <charconv>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -479,7 +480,7 @@ std::pair<std::size_t, std::size_t> median_interval(std::size_t n) {
         return sum;
     };
     std::size_t k = 0;
-    while (2 * below(k + 1) <= 0.05) {
+    while (k + 1 < n / 2 && 2 * below(k + 1) <= 0.05) {
         ++k;
     }
     return {k, n - 1 - k};
@@ -488,11 +489,18 @@ std::pair<std::size_t, std::size_t> median_interval(std::size_t n) {
 // --pairs=N: glint's BVH and Embree on each selected ray set, N rounds of the two back to back
 // (alternating which goes first), and the median of the rounds' rays/s ratios with its interval.
 int run_pairs(int rounds, const std::string& filter) {
-    if (rounds < 6) {
-        std::fprintf(stderr, "--pairs: at least 6 rounds, for a 95 %% interval of the median\n");
+    if (rounds < 6 || rounds > 1000) {
+        std::fprintf(stderr, "--pairs: from 6 rounds (for a 95 %% interval of the median) to 1000\n");
         return 2;
     }
-    const std::regex selected(filter.empty() || filter == "all" ? "." : filter);
+    std::regex selected;
+    try {
+        selected = std::regex(filter.empty() || filter == "all" ? "." : filter);
+    } catch (const std::regex_error& e) {
+        std::fprintf(stderr, "--benchmark_filter: '%s' is not a regular expression (%s)\n", filter.c_str(),
+                     e.what());
+        return 2;
+    }
     tbb::task_arena arena(kThreads);
     const auto [low, high] = median_interval(static_cast<std::size_t>(rounds));
     std::printf(
@@ -561,7 +569,11 @@ int main(int argc, char** argv) {
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
         if (arg.starts_with("--pairs=")) {
-            pairs = std::atoi(arg.c_str() + 8);
+            const char* end = arg.data() + arg.size();
+            if (std::from_chars(arg.data() + 8, end, pairs).ptr != end || pairs == 0) {
+                std::fprintf(stderr, "--pairs: expected a number of rounds, not '%s'\n", arg.c_str() + 8);
+                return 2;
+            }
         } else if (arg.starts_with("--embree-config=")) {
             embree_config = arg.substr(16);
         } else {
