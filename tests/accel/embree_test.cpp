@@ -3,10 +3,13 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
+
 #include "accel/accel_test_scenes.hpp"
 #include "glint/accel/bvh.hpp"
 #include "glint/accel/embree.hpp"
 #include "glint/accel/linear.hpp"
+#include "glint/bvh/wide_bvh.hpp"
 #include "glint/geometry/plane.hpp"
 #include "test_data.hpp"
 
@@ -35,7 +38,7 @@ TEST(Embree, RandomSpheresAndAPlaneGiveTheBvhsAndTheListsHits) {
 
 // A mesh (the bunny or its stand-in), a small tessellated sphere beside it and a sphere: Embree's hits
 // are the BVH's.
-void expect_bvhs_hits_with(MeshData data) {
+void expect_bvhs_hits_with(MeshData data, const std::string& device_config = "") {
     const Bounds3 box = Mesh(data).bounds();
     const Vec3 size = box.extent();
     std::vector<std::unique_ptr<Shape>> shapes;
@@ -45,7 +48,7 @@ void expect_bvhs_hits_with(MeshData data) {
     shapes.push_back(std::make_unique<Sphere>(box.lo + Vec3{0, 0.7 * size.y, 0}, 0.13 * size.x));
     const auto ptrs = pointers(shapes);
     const BvhAccelerator bvh(ptrs);
-    const EmbreeAccelerator embree(ptrs);
+    const EmbreeAccelerator embree(ptrs, device_config);
     expect_same_hits(bvh, embree, rays_into(bvh.bounds(), 3000, 13), ptrs, {true, 1e-5});
 }
 
@@ -93,6 +96,32 @@ void expect_bvhs_answers_from_the_surface(MeshData data) {
 
 TEST(Embree, GeneratedBlobAndMeshesGiveTheBvhsHits) {
     expect_bvhs_hits_with(test::displaced_blob());
+}
+
+// A device given a configuration (bench/accel.cpp holds Embree to AVX2 so, on CPUs where it would
+// otherwise run its AVX-512 kernels) answers as the default one does.
+TEST(Embree, ADeviceHeldToAvx2GivesTheBvhsHits) {
+    expect_bvhs_hits_with(test::displaced_blob(), "isa=avx2");
+}
+
+// The configuration reaches Embree: asked to say what it builds (verbose=2), a device held to AVX2
+// names only AVX2 kernels (Embree prints to standard output).
+TEST(Embree, TheDeviceConfigurationReachesEmbree) {
+    if (!WideBvh::cpu_has_avx2()) {
+        GTEST_SKIP() << "no AVX2 on this CPU";
+    }
+    std::vector<std::unique_ptr<Shape>> shapes;
+    shapes.push_back(std::make_unique<Mesh>(test::tessellated_sphere(2, 1.0, Vec3{0, 0, 0})));
+    const auto ptrs = pointers(shapes);
+    ::testing::internal::CaptureStdout();
+    {
+        const EmbreeAccelerator embree(ptrs, "isa=avx2,verbose=2");
+        Hit hit;
+        EXPECT_TRUE(embree.intersect(Ray{{0, 0, -5}, {0, 0, 1}}, kInf, hit));
+    }
+    const std::string said = ::testing::internal::GetCapturedStdout();
+    EXPECT_NE(said.find("avx2::"), std::string::npos) << said;
+    EXPECT_EQ(said.find("avx512::"), std::string::npos) << said;
 }
 
 TEST(Embree, RaysLeavingTheGeneratedBlobsSurfaceGiveTheBvhsAnswers) {
