@@ -421,10 +421,16 @@ void BM_BuildLargeMesh(benchmark::State& state) {
     state.counters["bytes/tri"] = bytes_per_triangle;
 }
 
+// The scenes that glint's BVH and Embree race on, each with every kind of ray (kRayKinds): the
+// ordinary runs register them, --pairs walks them.
+std::vector<std::string> raced_scenes() {
+    return {small_mesh().name, large_mesh().name, "spheres100k", "cornell"};
+}
+constexpr const char* kRayKinds[] = {"primary", "diffuse", "shadow"};
+
 void register_all() {
-    for (const std::string& name :
-         {small_mesh().name, large_mesh().name, std::string("spheres100k"), std::string("cornell")}) {
-        for (const char* kind : {"primary", "diffuse", "shadow"}) {
+    for (const std::string& name : raced_scenes()) {
+        for (const char* kind : kRayKinds) {
             for (bool embree : {false, true}) {
                 const std::string label =
                     std::string("Rays/") + name + "/" + kind + "/" + (embree ? "embree" : "bvh");
@@ -507,9 +513,8 @@ int run_pairs(int rounds, const std::string& filter) {
         "bvh / embree, rays/s ratio (%d threads), %d rounds of the two back to back: median "
         "[95 %% interval]%s%s\n",
         kThreads, rounds, embree_config.empty() ? "" : "; Embree's device: ", embree_config.c_str());
-    for (const std::string& name :
-         {small_mesh().name, large_mesh().name, std::string("spheres100k"), std::string("cornell")}) {
-        for (const char* kind : {"primary", "diffuse", "shadow"}) {
+    for (const std::string& name : raced_scenes()) {
+        for (const char* kind : kRayKinds) {
             const std::string label = "Rays/" + name + "/" + kind;
             // Either of the pair's names as Google Benchmark's runs have them.
             if (!std::regex_search(label + "/bvh/real_time", selected) &&

@@ -98,8 +98,8 @@ TEST(Embree, GeneratedBlobAndMeshesGiveTheBvhsHits) {
     expect_bvhs_hits_with(test::displaced_blob());
 }
 
-// A device given a configuration (bench/accel.cpp holds Embree to AVX2 so, on CPUs where it would
-// otherwise run its AVX-512 kernels) answers as the default one does.
+// A device given a configuration answers as the default one does (bench/accel.cpp holds Embree to AVX2
+// so, on CPUs where it would otherwise run its AVX-512 kernels).
 TEST(Embree, ADeviceHeldToAvx2GivesTheBvhsHits) {
     expect_bvhs_hits_with(test::displaced_blob(), "isa=avx2");
 }
@@ -111,7 +111,7 @@ TEST(Embree, TheDeviceConfigurationReachesEmbree) {
         GTEST_SKIP() << "no AVX2 on this CPU";
     }
     std::vector<std::unique_ptr<Shape>> shapes;
-    shapes.push_back(std::make_unique<Mesh>(test::tessellated_sphere(2, 1.0, Vec3{0, 0, 0})));
+    shapes.push_back(std::make_unique<Mesh>(test::tessellated_sphere(2)));
     const auto ptrs = pointers(shapes);
     ::testing::internal::CaptureStdout();
     {
