@@ -486,15 +486,11 @@ TEST(SamplePatterns, APixelsCachedHashesGiveTheSamePointsInEveryDimension) {
     }
 }
 
-TEST(SamplePatterns, CameraPointsTogetherAreOneByOnesPoints) {
-    // The render loop draws the camera points of a pixel's pass in one call (sobol computes them eight
-    // samples at a time in AVX2 lanes when the CPU has AVX2): the same bits as one sample at a time,
-    // for every pattern, with and without a lens, for passes that fill the lanes, leave some empty or
-    // span several groups of eight, and for first samples where the 32-bit index wraps.
-    if (!cpu_has_avx2_and_fma()) {
-        GTEST_SKIP() << "no AVX2 and FMA on this CPU: every pattern answers one sample at a time, the "
-                        "default this test would compare with itself";
-    }
+// The passes a render loop hands a pattern's batched calls, one pixel at a time: f(name, sampler, pixel,
+// first, count) for every pattern, three pixels, passes that fill the eight AVX2 lanes, leave some
+// empty or span several groups of eight, and first samples where the 32-bit index wraps.
+void for_each_pixel_pass(const std::function<void(const std::string&, const Sampler&, const PixelHashes&,
+                                                  std::uint32_t, std::uint32_t)>& f) {
     const std::vector<std::uint32_t> firsts = {0, 1, 3, 8, 1000, 0xfffffffbu};
     const std::vector<std::uint32_t> counts = {1, 2, 3, 4, 5, 8, 9, 16};
     for (const std::string& name : kAllPatterns) {
@@ -503,24 +499,96 @@ TEST(SamplePatterns, CameraPointsTogetherAreOneByOnesPoints) {
             const PixelHashes pixel(SampleHashes::pixel_hash(5, px, 7 * px + 1));
             for (const std::uint32_t first : firsts) {
                 for (const std::uint32_t count : counts) {
-                    for (const bool lens : {true, false}) {
-                        std::vector<FilmAndLens> together(count);
-                        sampler->camera_points(pixel, first, lens, together);
-                        for (std::uint32_t i = 0; i < count; ++i) {
-                            const SampleHashes key(pixel, first + i);
-                            const FilmAndLens alone =
-                                lens ? sampler->sample_film_and_lens(key)
-                                     : FilmAndLens{sampler->sample_2d(key, kFilmDimension), {}};
-                            const std::string where =
-                                name + " first=" + std::to_string(first) + " count=" + std::to_string(count) +
-                                " i=" + std::to_string(i) + " lens=" + std::to_string(lens);
-                            ASSERT_EQ(together[i].film, alone.film) << where;
-                            ASSERT_EQ(together[i].lens, alone.lens) << where;
-                        }
-                    }
+                    f(name, *sampler, pixel, first, count);
                 }
             }
         }
+    }
+}
+
+std::string pass_name(const std::string& name, std::uint32_t first, std::uint32_t count, std::uint32_t i) {
+    return name + " first=" + std::to_string(first) + " count=" + std::to_string(count) +
+           " i=" + std::to_string(i);
+}
+
+TEST(SamplePatterns, CameraPointsTogetherAreOneByOnesPoints) {
+    // The render loop draws the camera points of a pixel's pass in one call (sobol computes them eight
+    // samples at a time in AVX2 lanes when the CPU has AVX2): the same bits as one sample at a time,
+    // for every pattern, with and without a lens.
+    if (!cpu_has_avx2_and_fma()) {
+        GTEST_SKIP() << "no AVX2 and FMA on this CPU: every pattern answers one sample at a time, the "
+                        "default this test would compare with itself";
+    }
+    for_each_pixel_pass([](const std::string& name, const Sampler& sampler, const PixelHashes& pixel,
+                           std::uint32_t first, std::uint32_t count) {
+        for (const bool lens : {true, false}) {
+            std::vector<FilmAndLens> together(count);
+            sampler.camera_points(pixel, first, lens, together);
+            for (std::uint32_t i = 0; i < count; ++i) {
+                const SampleHashes key(pixel, first + i);
+                const FilmAndLens alone = lens ? sampler.sample_film_and_lens(key)
+                                               : FilmAndLens{sampler.sample_2d(key, kFilmDimension), {}};
+                const std::string where = pass_name(name, first, count, i) + " lens=" + std::to_string(lens);
+                ASSERT_EQ(together[i].film, alone.film) << where;
+                ASSERT_EQ(together[i].lens, alone.lens) << where;
+            }
+        }
+    });
+}
+
+TEST(SamplePatterns, IntegratorPointsTogetherAreOneByOnesPoints) {
+    // The render loop asks for a pixel's pass's first integrator dimensions in one call; a pattern that
+    // answers (sobol, in AVX2 lanes) must give each sample's sample_2d in each of those dimensions, and
+    // sample_1d as the x, to the bit.
+    std::set<std::string> answered;
+    for_each_pixel_pass([&](const std::string& name, const Sampler& sampler, const PixelHashes& pixel,
+                            std::uint32_t first, std::uint32_t count) {
+        std::vector<IntegratorPoints> together(count);
+        if (!sampler.integrator_points(pixel, first, together)) {
+            return;
+        }
+        answered.insert(name);
+        for (std::uint32_t i = 0; i < count; ++i) {
+            const SampleHashes key(pixel, first + i);
+            for (std::uint32_t d = 0; d < kBatchedDimensions; ++d) {
+                const std::uint32_t dimension = kFirstIntegratorDimension + d;
+                const std::string where = pass_name(name, first, count, i) + " d=" + std::to_string(d);
+                ASSERT_EQ(together[i].point[d], sampler.sample_2d(key, dimension)) << where;
+                ASSERT_EQ(together[i].point[d].x, sampler.sample_1d(key, dimension)) << where;
+            }
+        }
+    });
+    // Not a test of nothing: with AVX2, sobol answers (without, every pattern declines, and the stream
+    // asks one sample at a time).
+    if (cpu_has_avx2_and_fma()) {
+        EXPECT_EQ(answered, std::set<std::string>{"sobol"});
+    } else {
+        EXPECT_TRUE(answered.empty());
+    }
+}
+
+TEST(SamplePatterns, AStreamReadsTheBatchedDimensionsAndAsksForTheOthers) {
+    // Points no pattern would give, so that the test sees where each number came from.
+    IntegratorPoints batched;
+    for (std::uint32_t d = 0; d < kBatchedDimensions; ++d) {
+        batched.point[d] = {2.0 + d, -1.0 - d};
+    }
+    const auto sampler = make_sampler("sobol", 16);
+    const SampleHashes key(SampleKey{3, 4, 5, 6});
+    // From dimension 0: the camera's two from the pattern, then the batch's, then the pattern again.
+    SampleStream stream(*sampler, key, 0, &batched);
+    EXPECT_EQ(stream.next_2d(), sampler->sample_2d(key, 0));
+    EXPECT_EQ(stream.next_1d(), sampler->sample_1d(key, 1));
+    EXPECT_EQ(stream.next_2d(), batched.point[0]);
+    EXPECT_EQ(stream.next_1d(), batched.point[1].x);
+    EXPECT_EQ(stream.next_2d(), batched.point[2]);
+    EXPECT_EQ(stream.next_2d(), batched.point[3]);
+    EXPECT_EQ(stream.next_2d(), sampler->sample_2d(key, kFirstIntegratorDimension + kBatchedDimensions));
+    EXPECT_EQ(stream.next_1d(), sampler->sample_1d(key, kFirstIntegratorDimension + kBatchedDimensions + 1));
+    // Without a batch, every number from the pattern.
+    SampleStream alone(*sampler, key, kFirstIntegratorDimension);
+    for (std::uint32_t d = 0; d < kBatchedDimensions + 2; ++d) {
+        EXPECT_EQ(alone.next_2d(), sampler->sample_2d(key, kFirstIntegratorDimension + d));
     }
 }
 

@@ -128,6 +128,9 @@ bool ProgressiveRender::next_pass(const CancelCheck& cancelled, const TileDone& 
         // The batch's pixels' hashes, to which its keys refer: only in a pass of two or more samples a
         // pixel, so a batch has at most kMaxPassSamples / 2 of them.
         FixedVector<PixelHashes, kMaxPassSamples / 2> pixels;
+        // The batch's samples' first integrator dimensions, when the sampler draws them together (sobol),
+        // to which the jobs point: like the hashes, only in a pass of two or more samples a pixel.
+        FixedVector<IntegratorPoints, kMaxPassSamples> integrator_points;
         const auto render_jobs = [&] {
             FixedVector<Rgb, kMaxPassSamples> radiances;
             for (std::size_t i = 0; i < jobs.size(); ++i) {
@@ -150,6 +153,7 @@ bool ProgressiveRender::next_pass(const CancelCheck& cancelled, const TileDone& 
             }
             jobs.clear();
             pixels.clear();
+            integrator_points.clear();
         };
         const bool lens = view_.camera->uses_lens();
         for (int y = tile.y0; y < tile.y1; ++y) {
@@ -166,8 +170,16 @@ bool ProgressiveRender::next_pass(const CancelCheck& cancelled, const TileDone& 
                     const PixelHashes& pixel = pixels.emplace_back(pixel_hash);
                     std::array<FilmAndLens, kMaxPassSamples> points;
                     view_.sampler->camera_points(pixel, first, lens, std::span(points.data(), count));
+                    // The paths' first light and BSDF samples too (sobol: eight at a time in AVX2 lanes).
+                    const std::size_t batched = integrator_points.size();
                     for (std::uint32_t i = 0; i < count; ++i) {
-                        jobs.emplace_back(SampleJob{x, y, SampleHashes(pixel, first + i), points[i]});
+                        integrator_points.emplace_back();
+                    }
+                    const bool drawn = view_.sampler->integrator_points(
+                        pixel, first, integrator_points.span().subspan(batched, count));
+                    for (std::uint32_t i = 0; i < count; ++i) {
+                        jobs.emplace_back(SampleJob{x, y, SampleHashes(pixel, first + i), points[i],
+                                                    drawn ? &integrator_points[batched + i] : nullptr});
                     }
                 } else {
                     // A one-sample pass hashes as it goes: the same bits.

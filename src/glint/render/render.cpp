@@ -91,7 +91,8 @@ void render_batch(const World& world, const View& view, const Integrator& integr
             out[i] = Rgb{};
             if (const Ray& ray = made[i - start]; sees_scene(ray)) {
                 camera_rays.emplace_back(ray);
-                streams.emplace_back(*view.sampler, jobs[i].key, kFirstIntegratorDimension);
+                streams.emplace_back(*view.sampler, jobs[i].key, kFirstIntegratorDimension,
+                                     jobs[i].integrator_points);
                 sample_of.emplace_back(i);
                 radiances.emplace_back();
             }

@@ -84,6 +84,9 @@ struct SampleJob {
     int x = 0, y = 0;
     SampleHashes key;
     FilmAndLens points;
+    // The sample's first integrator dimensions, when the render loop drew them together with the pass's
+    // other samples of the pixel (Sampler::integrator_points); else null.
+    const IntegratorPoints* integrator_points = nullptr;
 };
 // Several samples at once, of one pixel or of several: out[i] is exactly what render_sample gives
 // jobs[i], but the camera makes their rays together (Camera::generate_rays) and the integrator takes

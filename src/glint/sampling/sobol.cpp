@@ -199,6 +199,46 @@ __attribute__((target("avx2,fma"))) void camera_points_avx2(const PixelHashes& p
         }
     }
 }
+
+// Four samples' points of one dimension, (x, y) pairs from x and y lanes, into `out`'s entries i … i + 3
+// (as many as `count`).
+GLINT_AVX2_INLINE void store_pairs(__m256d x, __m256d y, std::uint32_t dimension, IntegratorPoints* out,
+                                   std::uint32_t count) {
+    const __m256d even = _mm256_unpacklo_pd(x, y);  // samples 0 and 2
+    const __m256d odd = _mm256_unpackhi_pd(x, y);   // samples 1 and 3
+    const __m128d pairs[4] = {_mm256_castpd256_pd128(even), _mm256_castpd256_pd128(odd),
+                              _mm256_extractf128_pd(even, 1), _mm256_extractf128_pd(odd, 1)};
+    static_assert(sizeof(Point2) == sizeof(__m128d));
+    for (std::uint32_t i = 0; i < count; ++i) {
+        std::memcpy(static_cast<void*>(&out[i].point[dimension]), &pairs[i], sizeof(Point2));
+    }
+}
+
+__attribute__((target("avx2,fma"))) void integrator_points_avx2(const PixelHashes& pixel, std::uint32_t first,
+                                                                std::span<IntegratorPoints> out) {
+    static_assert(kFirstIntegratorDimension + kBatchedDimensions <= SobolSampler::kStratifiedDimensions);
+    const __m256i lane = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
+    for (std::size_t done = 0; done < out.size(); done += 8) {
+        const auto count = static_cast<std::uint32_t>(std::min<std::size_t>(8, out.size() - done));
+        // Lanes past `count` compute points no one reads.
+        const __m256i sample_reversed =
+            reverse_bits_lanes(_mm256_add_epi32(broadcast(first + static_cast<std::uint32_t>(done)), lane));
+        IntegratorPoints* rows = out.data() + done;
+        for (std::uint32_t i = 0; i < kBatchedDimensions; ++i) {
+            const std::uint32_t dimension = kFirstIntegratorDimension + i;
+            // reversed_point(key, dimension): the index scrambled by the dimension's own seed, then
+            // Sobol's dimensions 0 (the index itself, reversed) and 1 of it.
+            const __m256i index = reverse_bits_lanes(laine_karras_lanes(
+                sample_reversed, broadcast(static_cast<std::uint32_t>(pixel.bits[dimension]))));
+            const PointLanes point = scrambled_point_lanes(index, sobol_dimension1_reversed_lanes(index),
+                                                           pixel.mixed_bits[dimension]);
+            store_pairs(point.x_0_3, point.y_0_3, i, rows, std::min(count, 4u));
+            if (count > 4) {
+                store_pairs(point.x_4_7, point.y_4_7, i, rows + 4, count - 4);
+            }
+        }
+    }
+}
 #endif
 
 }  // namespace
@@ -237,6 +277,18 @@ void SobolSampler::camera_points(const PixelHashes& pixel, std::uint32_t first, 
     }
 #endif
     Sampler::camera_points(pixel, first, lens, out);
+}
+
+bool SobolSampler::integrator_points(const PixelHashes& pixel, std::uint32_t first,
+                                     std::span<IntegratorPoints> out) const {
+#ifdef GLINT_HAVE_X86_SIMD
+    if (cpu_has_avx2_and_fma()) {
+        integrator_points_avx2(pixel, first, out);
+        return true;
+    }
+#endif
+    // One sample at a time would cost what the stream's own calls cost, and some dimensions go unread.
+    return Sampler::integrator_points(pixel, first, out);
 }
 
 }  // namespace glint

@@ -42,6 +42,11 @@ class SobolSampler final : public Sampler {
     // conversion to double is exact, so the lanes give the same bits as one sample at a time.
     void camera_points(const PixelHashes& pixel, std::uint32_t first, bool lens,
                        std::span<FilmAndLens> out) const override;
+    // The first integrator dimensions' points (all stratified: kFirstIntegratorDimension +
+    // kBatchedDimensions = kStratifiedDimensions) for eight samples at a time in AVX2 lanes, by the same
+    // integer operations as camera_points: when the CPU has AVX2 and FMA, else false.
+    bool integrator_points(const PixelHashes& pixel, std::uint32_t first,
+                           std::span<IntegratorPoints> out) const override;
 
   private:
     std::uint32_t n_;
