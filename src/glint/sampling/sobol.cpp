@@ -129,6 +129,11 @@ GLINT_AVX2_INLINE __m256i table_lanes(const SobolReversedTable& table, __m256i i
     return sum;
 }
 
+// scrambled_index: the samples' reversed indices Owen-scrambled by a dimension's seed, in natural order.
+GLINT_AVX2_INLINE __m256i scrambled_index_lanes(__m256i sample_reversed, __m256i seed) {
+    return reverse_bits_lanes(laine_karras_lanes(sample_reversed, seed));
+}
+
 // bits_to_unit of lanes 0–3 and of lanes 4–7: the unsigned lanes made signed by flipping their top bit
 // (x − 2^31), converted, then 2^31 added back; every step is exact.
 GLINT_AVX2_INLINE void to_unit_lanes(__m256i bits, __m256d& lanes_0_3, __m256d& lanes_4_7) {
@@ -183,7 +188,7 @@ __attribute__((target("avx2,fma"))) void camera_points_avx2(const PixelHashes& p
         // Lanes past `count` compute points no one reads.
         const __m256i sample = _mm256_add_epi32(broadcast(first + static_cast<std::uint32_t>(done)), lane);
         // reversed_point(key, kFilmDimension): the film's scrambled index is its point's reversed x.
-        const __m256i index = reverse_bits_lanes(laine_karras_lanes(reverse_bits_lanes(sample), film_seed));
+        const __m256i index = scrambled_index_lanes(reverse_bits_lanes(sample), film_seed);
         const PointLanes film = scrambled_point_lanes(index, sobol_dimension1_reversed_lanes(index),
                                                       pixel.mixed_bits[kFilmDimension]);
         PointLanes lens_lanes{};  // {0, 0} points without a lens, as one sample at a time gives
@@ -228,8 +233,8 @@ __attribute__((target("avx2,fma"))) void integrator_points_avx2(const PixelHashe
             const std::uint32_t dimension = kFirstIntegratorDimension + i;
             // reversed_point(key, dimension): the index scrambled by the dimension's own seed, then
             // Sobol's dimensions 0 (the index itself, reversed) and 1 of it.
-            const __m256i index = reverse_bits_lanes(laine_karras_lanes(
-                sample_reversed, broadcast(static_cast<std::uint32_t>(pixel.bits[dimension]))));
+            const __m256i index = scrambled_index_lanes(
+                sample_reversed, broadcast(static_cast<std::uint32_t>(pixel.bits[dimension])));
             const PointLanes point = scrambled_point_lanes(index, sobol_dimension1_reversed_lanes(index),
                                                            pixel.mixed_bits[dimension]);
             store_pairs(point.x_0_3, point.y_0_3, i, rows, std::min(count, 4u));
