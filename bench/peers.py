@@ -12,7 +12,9 @@ one run, alternating the two renderers (the machine is shared and noisy; medians
      disturbs less);
   2. the time to equal RMSE against a high-sample reference that the peer makes itself (two halves
      with different seeds, whose difference estimates the reference's own noise, subtracted from
-     every measured MSE), from fits of log RMSE on log time (a quadratic, and lines beside it);
+     every measured MSE): glint's spp needed from a fit of log RMSE on log spp through its ladder, then
+     the peer at its target spp and glint at the spp either side of its need, alternating in the same
+     rounds as (1) (and, beside it, from fits of log RMSE on log time: a quadratic, and lines);
   3. that glint converges to the peer's image: 16x16-pixel block means, z-scores against the noise of
      both sides (each estimated from two independent halves);
   4. the shading overhead: glint's whole-render rays/s against bench/accel's kernel rays/s.
@@ -332,20 +334,40 @@ def median(values):
 # ---------------------------------------------------------------------------------------------------
 # One pair of renderers on one scene
 
-def equal_spp(peer, others, spp, runs, folder):
-    """Alternating runs at equal spp: peer, then each glint, the order reversed on every other round."""
-    times = {r.name: [] for r in [peer] + others}
-    cpu = {r.name: [] for r in [peer] + others}
-    images = {r.name: [] for r in [peer] + others}
+def alternating_rounds(jobs, runs, folder, first_seed):
+    """`runs` rounds of the jobs, each a (label, renderer, spp), in order and the order reversed on every
+    other round; round i renders every job with seed first_seed + i. Returns, per label, a list per
+    round of the Run."""
+    results = {label: [] for label, _, _ in jobs}
+    os.makedirs(folder, exist_ok=True)
     for i in range(runs):
-        order = [peer] + others if i % 2 == 0 else others[::-1] + [peer]
-        for r in order:
-            path = os.path.join(folder, f'{r.name.replace(" ", "")}-eq{spp}-{i}.pfm')
-            result = r.render(spp, 101 + i, path)
-            times[r.name].append(result.wall)
-            cpu[r.name].append(result.cpu)
-            images[r.name].append((result.image, result.err))
-    return times, cpu, images
+        for label, r, spp in (jobs if i % 2 == 0 else jobs[::-1]):
+            path = os.path.join(folder, f'{label}-{i}.' + ('pfm' if r.image_from else 'ppm'))
+            results[label].append(r.render(spp, first_seed + i, path))
+    return results
+
+
+def run_label(renderer, spp):
+    """A renderer at an spp, as the rounds name its runs (and their images' files)."""
+    return f'{renderer.name.replace(" ", "")}-{spp}spp'
+
+
+def spp_needed_curve(pts, target):
+    """The spp at which the curve of log RMSE on log spp through the points reaches the target."""
+    spps, rmses = [p['spp'] for p in pts], [p['rmse'] for p in pts]
+    return x_for_curve(fit_curve(spps, rmses), target, time_for(fit(spps, rmses)['free'], target))
+
+
+def spp_bracket(spp_needed):
+    """The whole spp on either side of a (fractional) spp needed: glint renders both in the rounds, and
+    its time at spp_needed is interpolated between them (its time is close to linear in spp)."""
+    low = max(1, math.floor(spp_needed))
+    return low, low + 1
+
+
+def time_at(spp_needed, low_run, high_run, low):
+    """Wall time at spp_needed, by the line through the runs at low and low + 1 spp of one round."""
+    return low_run.wall + (spp_needed - low) * (high_run.wall - low_run.wall)
 
 
 # glint's rungs take a fraction of a second to a few seconds, where one hiccup of the machine moves a
@@ -394,20 +416,37 @@ def measure_scene(key, cfg, runs, peer, glint_one, glint_all=None, bvh_peer=None
     result = {'size': list(size), 'reference_spp': 2 * cfg['ref'], 'reference_mean': ref_level,
               'reference_rmse_relative': math.sqrt(float(np.mean(ref_var))) / ref_level, 'pairs': {}}
 
-    # 1. Equal spp.
-    others = [glint_one] + ([glint_all] if glint_all else [])
-    log(f'  equal spp: {cfg["equal"]} spp, {runs} alternating runs ...')
-    times, cpu, images = equal_spp(peer, others, cfg['equal'], runs, folder)
-
-    # 2. RMSE ladders.
+    # 1. RMSE ladders. They come first because the rounds below render glint at the spp it needs to reach
+    # the target, which a fit through its ladder tells.
     glint_ladder = cfg.get('glint_ladder', cfg['ladder'])
     log(f'  RMSE ladder: spp {cfg["ladder"]}' + (f', glint {glint_ladder}' if 'glint_ladder' in cfg else '') + ' ...')
     points = ladder([peer, glint_one], [cfg['ladder'], glint_ladder], folder, ref_mean, ref_var)
-    # The equal-spp runs are points too (same seeds policy: apart from the reference's).
+    ladder_target = median([p['rmse'] for p in points[peer.name] if p['spp'] == cfg['target']])
+    low, high = spp_bracket(spp_needed_curve(points[glint_one.name], ladder_target))
+
+    # 2. Alternating rounds: the peer at equal spp (and at its target spp, when that differs); each glint
+    # at equal spp and at the whole spp on either side of what it needs for the target RMSE. Both
+    # figures the targets are read from, the ratio at equal spp and the one to equal RMSE, are then
+    # ratios of runs made side by side, so a slow spell of the machine moves both renderers alike.
+    others = [glint_one] + ([glint_all] if glint_all else [])
+    wanted = [(peer, cfg['equal']), (peer, cfg['target'])] + \
+        [(g, spp) for g in others for spp in (cfg['equal'], low, high)]
+    jobs = list({run_label(r, spp): (run_label(r, spp), r, spp) for r, spp in wanted}.values())
+    log(f'  alternating rounds: {cfg["equal"]} spp (equal spp), glint also at {low} and {high} spp (to equal RMSE), '
+        f'{runs} rounds ...')
+    rounds = alternating_rounds(jobs, runs, folder, 101)
+    at_equal = {r.name: rounds[run_label(r, cfg['equal'])] for r in [peer] + others}
+    times = {n: [x.wall for x in rs] for n, rs in at_equal.items()}
+    cpu = {n: [x.cpu for x in rs] for n, rs in at_equal.items()}
+    images = {n: [(x.image, x.err) for x in rs] for n, rs in at_equal.items()}
+
+    # Every run of the peer and of glint on one thread is a point of the fits too (seeds apart from the
+    # reference's).
     for r in [peer, glint_one]:
-        for (image, _), wall, c in zip(images[r.name], times[r.name], cpu[r.name]):
-            points[r.name].append({'spp': cfg['equal'], 'wall': wall, 'cpu': c,
-                                   'rmse': rmse_against(image, ref_mean, ref_var)})
+        for spp in sorted({spp for rr, spp in wanted if rr is r}):
+            for x in rounds[run_label(r, spp)]:
+                points[r.name].append({'spp': spp, 'wall': x.wall, 'cpu': x.cpu,
+                                       'rmse': rmse_against(x.image, ref_mean, ref_var)})
     fits = {n: fit([p['wall'] for p in pts], [p['rmse'] for p in pts]) for n, pts in points.items()}
     spp_fits = {n: fit([p['spp'] for p in pts], [p['rmse'] for p in pts]) for n, pts in points.items()}
     curves = {n: fit_curve([p['wall'] for p in pts], [p['rmse'] for p in pts]) for n, pts in points.items()}
@@ -435,6 +474,15 @@ def measure_scene(key, cfg, runs, peer, glint_one, glint_all=None, bvh_peer=None
     for extra, base in ([(glint_all, glint_one)] if glint_all else []) + ([(bvh_peer, peer)] if bvh_peer else []):
         derived[extra.name] = base.name
 
+    # To equal RMSE, round by round: the peer reaches the target at its target spp (the target is its
+    # median RMSE there); glint at the spp its fit needs, its time there interpolated between its runs
+    # on either side in the same round.
+    glint_needs = needed[glint_one.name]['spp_needed_curve']
+
+    def glint_at_target(g):
+        return [time_at(glint_needs, a, b, low) for a, b in zip(rounds[run_label(g, low)], rounds[run_label(g, high)])]
+    peer_at_target = [x.wall for x in rounds[run_label(peer, cfg['target'])]]
+
     # 3. Convergence: glint at high spp in two halves (all cores) against the reference.
     log(f'  convergence: glint 2 x {cfg["conv"]} spp ...')
     conv_glint = glint_all or glint_one
@@ -443,8 +491,9 @@ def measure_scene(key, cfg, runs, peer, glint_one, glint_all=None, bvh_peer=None
     conv = convergence(halves[0].image, halves[1].image, ref_mean, ref_var)
     conv['glint_spp'] = 2 * cfg['conv']
 
-    def pair(other_name, peer_name, peer_times, peer_cpu, peer_needed, note=''):
+    def pair(other_name, peer_name, peer_times, peer_cpu, peer_needed, peer_to_target, glint_to_target, note=''):
         p_wall, g_wall = median(peer_times), median(times[other_name])
+        round_ratios = [p / g for p, g in zip(peer_to_target, glint_to_target)]
         entry = {
             'peer': peer_name, 'glint': other_name, 'spp': cfg['equal'] if peer_name != 'b2bvh' else 32,
             'peer_wall_s': p_wall, 'glint_wall_s': g_wall, 'equal_spp_ratio': p_wall / g_wall,
@@ -453,6 +502,13 @@ def measure_scene(key, cfg, runs, peer, glint_one, glint_all=None, bvh_peer=None
             'glint_mrays_per_s': median([glint_rays_per_second(e) or 0 for _, e in images[other_name]]),
             'target_rmse_relative': target / ref_level, 'target': f'{peer.name} at {cfg["target"]} spp',
             'convergence': conv, 'note': note,
+            # The ratio the targets are read from: to equal RMSE, the median over the alternating rounds
+            # of the peer's time at its target spp over glint's at the spp it needs (the same round's).
+            'equal_rmse_ratio_rounds': median(round_ratios),
+            'equal_rmse_ratio_rounds_range': [min(round_ratios), max(round_ratios)],
+            'peer_time_to_target_rounds_s': median(peer_to_target),
+            'glint_time_to_target_rounds_s': median(glint_to_target),
+            'glint_spp_needed_rounds': glint_needs, 'glint_spp_bracket': [low, high],
         }
         g = needed.get(other_name)
         if g is None:   # glint on all cores: glint-1's spp needed at its own time per spp
@@ -463,8 +519,8 @@ def measure_scene(key, cfg, runs, peer, glint_one, glint_all=None, bvh_peer=None
             entry['note'] += ('; ' if entry['note'] else '') + \
                 f'{other_name}: RMSE per spp taken from {derived[other_name]} (same samples), time per spp its own'
         entry.update({
-            # From the curves (fit_curve): the ratio the targets are read from. The lines' ratios follow,
-            # as before.
+            # From the fits of RMSE on time (fit_curve, then the lines): the same ratio, read from curves
+            # through points made at different times of the run (so a drift of the machine moves it).
             'peer_time_to_target_curve_s': peer_needed['curve'], 'glint_time_to_target_curve_s': g['curve'],
             'equal_rmse_ratio_curve': peer_needed['curve'] / g['curve'],
             'peer_spp_needed_curve': peer_needed['spp_needed_curve'],
@@ -482,38 +538,41 @@ def measure_scene(key, cfg, runs, peer, glint_one, glint_all=None, bvh_peer=None
 
     for other in others:
         result['pairs'][f'{peer.name} / {other.name}'] = pair(
-            other.name, peer.name, times[peer.name], cpu[peer.name], needed[peer.name])
+            other.name, peer.name, times[peer.name], cpu[peer.name], needed[peer.name],
+            peer_at_target, glint_at_target(other))
 
     if bvh_peer:
         # b2bvh has only PPM output (gamma 2, clamped, 8 bits) at its fixed 32 spp: timed, not compared
-        # by pixels. Its per-sample estimator is b1f's (see docs/benchmarks.md), so its time to the
-        # target is its own time per spp x b1f's spp needed.
-        log(f'  {bvh_peer.name}: 32 spp (fixed in its code), {runs} alternating runs with glint ...')
-        bvh_times, bvh_cpu, g32, g32cpu, g32img = [], [], [], [], []
-        for i in range(runs):
-            order = [bvh_peer, glint_one] if i % 2 == 0 else [glint_one, bvh_peer]
-            for r in order:
-                if r is bvh_peer:
-                    res = r.render(32, 0, os.path.join(folder, 'b2bvh.ppm'))
-                    bvh_times.append(res.wall)
-                    bvh_cpu.append(res.cpu)
-                else:
-                    res = r.render(32, 201 + i, os.path.join(folder, f'glint-eq32-{i}.pfm'))
-                    g32.append(res.wall)
-                    g32cpu.append(res.cpu)
-                    g32img.append((None, res.err))
+        # by pixels. Its per-sample estimator is b1f's (see docs/benchmarks.md), so it needs b1f's spp
+        # for the target: the target spp (b1f's own RMSE there is the target). Its time there is its time
+        # per spp x those spp.
+        log(f'  {bvh_peer.name}: 32 spp (fixed in its code), glint at 32, {low} and {high} spp, '
+            f'{runs} alternating rounds ...')
+        bvh_rounds = alternating_rounds(
+            [(run_label(r, spp), r, spp) for r, spp in
+             dict.fromkeys([(bvh_peer, 32), (glint_one, 32), (glint_one, low), (glint_one, high)])],
+            runs, os.path.join(folder, 'b2bvh-rounds'), 201)
+        bvh_times = [x.wall for x in bvh_rounds[run_label(bvh_peer, 32)]]
+        bvh_cpu = [x.cpu for x in bvh_rounds[run_label(bvh_peer, 32)]]
+        g32 = bvh_rounds[run_label(glint_one, 32)]
         per_spp = median(bvh_times) / 32
         base = needed[peer.name]
         bvh_needed = dict(base, free=per_spp * base['spp_needed'], half=per_spp * base['spp_needed_half'],
                           curve=per_spp * base['spp_needed_curve'])
         saved = times[glint_one.name], cpu[glint_one.name], images[glint_one.name]
-        times[glint_one.name], cpu[glint_one.name], images[glint_one.name] = g32, g32cpu, g32img
-        entry = pair(glint_one.name, bvh_peer.name, bvh_times, bvh_cpu, bvh_needed,
+        times[glint_one.name] = [x.wall for x in g32]
+        cpu[glint_one.name] = [x.cpu for x in g32]
+        images[glint_one.name] = [(None, x.err) for x in g32]
+        bvh_to_target = [t * cfg['target'] / 32 for t in bvh_times]
+        glint_to_target = [time_at(glint_needs, a, b, low) for a, b in
+                           zip(bvh_rounds[run_label(glint_one, low)], bvh_rounds[run_label(glint_one, high)])]
+        entry = pair(glint_one.name, bvh_peer.name, bvh_times, bvh_cpu, bvh_needed, bvh_to_target, glint_to_target,
                      note=f'{bvh_peer.name}: no linear output; its time to the target RMSE = its time per spp x '
                           f'{peer.name}\'s spp needed (same estimator per sample); equal spp at its fixed 32 spp')
         entry['spp'] = 32
         times[glint_one.name], cpu[glint_one.name], images[glint_one.name] = saved
         result['pairs'][f'{bvh_peer.name} / {glint_one.name}'] = entry
+
 
     result['ladder'] = points
     result['fits'] = {n: {'free': f['free'], 'slope_half': f['half']} for n, f in fits.items()}
@@ -521,6 +580,12 @@ def measure_scene(key, cfg, runs, peer, glint_one, glint_all=None, bvh_peer=None
     for name, pts in points.items():
         log(f'  {name:10s} ' + '  '.join(f'{p["spp"]}spp {p["wall"]:.2f}s rmse {p["rmse"] / ref_level:.4f}'
                                           for p in sorted(pts, key=lambda p: p['spp'])))
+    for name, e in result['pairs'].items():
+        lo, hi = e['equal_rmse_ratio_rounds_range']
+        log(f'  to equal RMSE, {name}: {e["equal_rmse_ratio_rounds"]:.2f} ({lo:.2f}-{hi:.2f} over the rounds): '
+            f'{e["peer"]} {e["peer_time_to_target_rounds_s"]:.2f} s for {cfg["target"]} spp '
+            f'against glint {e["glint_time_to_target_rounds_s"]:.3f} s for {e["glint_spp_needed_rounds"]:.2f} spp; '
+            f'from the curves {e["equal_rmse_ratio_curve"]:.2f}')
     log(f'  convergence: {conv["blocks"]} blocks of {BLOCK}x{BLOCK} px x channel, max |z| {conv["max_abs_z"]:.2f}, '
         f'{conv["beyond_4sigma"]} beyond {Z_LIMIT:.0f} sigma -> {"PASS" if conv["pass"] else "FAIL"}; std of z {conv["z_std"]:.2f}; '
         f'mean glint/peer {conv["mean_ratio_glint_over_peer"]:.4f}; '
@@ -672,18 +737,23 @@ def main():
     log(f'\n== bench-peers ({args.mode} mode, medians of {runs} alternating runs; ratios peer/glint: > 1 means '
         'glint is faster)')
     log(f'{"pair":24s} {"scene":14s} {"spp":>4s} {"eq-spp wall":>11s} {"(cpu)":>6s} {"eq-RMSE":>8s} '
-        f'{"(line)":>8s} {"(slope -1/2)":>12s} {"slopes peer/glint":>17s}  convergence')
+        f'{"(rounds)":>13s} {"(curve)":>8s} {"(line)":>8s} {"(slope -1/2)":>12s} {"slopes peer/glint":>17s}  convergence')
     for scene, r in results['scenes'].items():
         for name, p in r['pairs'].items():
             c = p['convergence']
+            lo, hi = p['equal_rmse_ratio_rounds_range']
             log(f'{name:24s} {scene:14s} {p["spp"]:4d} {p["equal_spp_ratio"]:11.2f} {p["equal_spp_cpu_ratio"]:6.2f} '
+                f'{p["equal_rmse_ratio_rounds"]:8.2f} {f"{lo:.2f}-{hi:.2f}":>13s} '
                 f'{p["equal_rmse_ratio_curve"]:7.2f}{"*" if p["extrapolated_curve"] else " "} '
                 f'{p["equal_rmse_ratio"]:7.2f}{"*" if p["extrapolated"] else " "} '
                 f'{p["equal_rmse_ratio_slope_half"]:12.2f} {p["peer_slope"]:8.2f}/{p["glint_slope"]:<8.2f}  '
                 f'{"PASS" if c["pass"] else "FAIL"} (max|z| {c["max_abs_z"]:.1f}, {c["beyond_4sigma"]}/{c["blocks"]} > 4σ)')
-    log('eq-RMSE: time to reach the peer\'s RMSE at its target spp (table above, per scene), from a quadratic '
-        'in log wall time fitted to log RMSE (* = outside the measured times); line: from a straight line (free '
-        'slope); slope -1/2: a line of slope fixed at -1/2. cpu: the CPU-time ratio at equal spp.')
+    log('eq-RMSE: the median over the alternating rounds of the peer\'s time at its target spp (its RMSE there is '
+        'the target) over glint\'s at the spp it needs for that RMSE (from a quadratic fit of log RMSE on log spp; its '
+        'time interpolated between its runs at the whole spp either side, in the same round); rounds: the lowest and '
+        'highest round. curve: the same ratio read from quadratics of log RMSE on log wall time through all the '
+        'points (* = outside the measured times); line: from a straight line (free slope); slope -1/2: a line of '
+        'slope fixed at -1/2. cpu: the CPU-time ratio at equal spp.')
     for name, p in [(n, p) for r in results['scenes'].values() for n, p in r['pairs'].items() if p['note']]:
         log(f'note ({name}): {p["note"]}')
     log(f'results: {os.path.relpath(os.path.join(OUT, "results.json"), ROOT)}; '
