@@ -334,14 +334,16 @@ def median(values):
 # ---------------------------------------------------------------------------------------------------
 # One pair of renderers on one scene
 
-def alternating_rounds(jobs, runs, folder, first_seed):
-    """`runs` rounds of the jobs, each a (label, renderer, spp), in order and the order reversed on every
-    other round; round i renders every job with seed first_seed + i. Returns, per label, a list per
-    round of the Run."""
-    results = {label: [] for label, _, _ in jobs}
+def alternating_rounds(wanted, runs, folder, first_seed):
+    """`runs` rounds of the runs wanted, each a (renderer, spp) (one asked for twice is run once), in
+    order and the order reversed on every other round; round i renders each with seed first_seed + i.
+    Returns, per run_label, a list per round of the Run."""
+    jobs = list(dict.fromkeys(wanted))
+    results = {run_label(r, spp): [] for r, spp in jobs}
     os.makedirs(folder, exist_ok=True)
     for i in range(runs):
-        for label, r, spp in (jobs if i % 2 == 0 else jobs[::-1]):
+        for r, spp in (jobs if i % 2 == 0 else jobs[::-1]):
+            label = run_label(r, spp)
             path = os.path.join(folder, f'{label}-{i}.' + ('pfm' if r.image_from else 'ppm'))
             results[label].append(r.render(spp, first_seed + i, path))
     return results
@@ -431,10 +433,9 @@ def measure_scene(key, cfg, runs, peer, glint_one, glint_all=None, bvh_peer=None
     others = [glint_one] + ([glint_all] if glint_all else [])
     wanted = [(peer, cfg['equal']), (peer, cfg['target'])] + \
         [(g, spp) for g in others for spp in (cfg['equal'], low, high)]
-    jobs = list({run_label(r, spp): (run_label(r, spp), r, spp) for r, spp in wanted}.values())
     log(f'  alternating rounds: {cfg["equal"]} spp (equal spp), glint also at {low} and {high} spp (to equal RMSE), '
         f'{runs} rounds ...')
-    rounds = alternating_rounds(jobs, runs, folder, 101)
+    rounds = alternating_rounds(wanted, runs, folder, 101)
     at_equal = {r.name: rounds[run_label(r, cfg['equal'])] for r in [peer] + others}
     times = {n: [x.wall for x in rs] for n, rs in at_equal.items()}
     cpu = {n: [x.cpu for x in rs] for n, rs in at_equal.items()}
@@ -479,8 +480,8 @@ def measure_scene(key, cfg, runs, peer, glint_one, glint_all=None, bvh_peer=None
     # on either side in the same round.
     glint_needs = needed[glint_one.name]['spp_needed_curve']
 
-    def glint_at_target(g):
-        return [time_at(glint_needs, a, b, low) for a, b in zip(rounds[run_label(g, low)], rounds[run_label(g, high)])]
+    def glint_at_target(runs_of, g):
+        return [time_at(glint_needs, a, b, low) for a, b in zip(runs_of[run_label(g, low)], runs_of[run_label(g, high)])]
     peer_at_target = [x.wall for x in rounds[run_label(peer, cfg['target'])]]
 
     # 3. Convergence: glint at high spp in two halves (all cores) against the reference.
@@ -539,7 +540,7 @@ def measure_scene(key, cfg, runs, peer, glint_one, glint_all=None, bvh_peer=None
     for other in others:
         result['pairs'][f'{peer.name} / {other.name}'] = pair(
             other.name, peer.name, times[peer.name], cpu[peer.name], needed[peer.name],
-            peer_at_target, glint_at_target(other))
+            peer_at_target, glint_at_target(rounds, other))
 
     if bvh_peer:
         # b2bvh has only PPM output (gamma 2, clamped, 8 bits) at its fixed 32 spp: timed, not compared
@@ -548,10 +549,8 @@ def measure_scene(key, cfg, runs, peer, glint_one, glint_all=None, bvh_peer=None
         # per spp x those spp.
         log(f'  {bvh_peer.name}: 32 spp (fixed in its code), glint at 32, {low} and {high} spp, '
             f'{runs} alternating rounds ...')
-        bvh_rounds = alternating_rounds(
-            [(run_label(r, spp), r, spp) for r, spp in
-             dict.fromkeys([(bvh_peer, 32), (glint_one, 32), (glint_one, low), (glint_one, high)])],
-            runs, os.path.join(folder, 'b2bvh-rounds'), 201)
+        bvh_rounds = alternating_rounds([(bvh_peer, 32), (glint_one, 32), (glint_one, low), (glint_one, high)],
+                                        runs, os.path.join(folder, 'b2bvh-rounds'), 201)
         bvh_times = [x.wall for x in bvh_rounds[run_label(bvh_peer, 32)]]
         bvh_cpu = [x.cpu for x in bvh_rounds[run_label(bvh_peer, 32)]]
         g32 = bvh_rounds[run_label(glint_one, 32)]
@@ -564,15 +563,13 @@ def measure_scene(key, cfg, runs, peer, glint_one, glint_all=None, bvh_peer=None
         cpu[glint_one.name] = [x.cpu for x in g32]
         images[glint_one.name] = [(None, x.err) for x in g32]
         bvh_to_target = [t * cfg['target'] / 32 for t in bvh_times]
-        glint_to_target = [time_at(glint_needs, a, b, low) for a, b in
-                           zip(bvh_rounds[run_label(glint_one, low)], bvh_rounds[run_label(glint_one, high)])]
-        entry = pair(glint_one.name, bvh_peer.name, bvh_times, bvh_cpu, bvh_needed, bvh_to_target, glint_to_target,
+        entry = pair(glint_one.name, bvh_peer.name, bvh_times, bvh_cpu, bvh_needed, bvh_to_target,
+                     glint_at_target(bvh_rounds, glint_one),
                      note=f'{bvh_peer.name}: no linear output; its time to the target RMSE = its time per spp x '
                           f'{peer.name}\'s spp needed (same estimator per sample); equal spp at its fixed 32 spp')
         entry['spp'] = 32
         times[glint_one.name], cpu[glint_one.name], images[glint_one.name] = saved
         result['pairs'][f'{bvh_peer.name} / {glint_one.name}'] = entry
-
 
     result['ladder'] = points
     result['fits'] = {n: {'free': f['free'], 'slope_half': f['half']} for n, f in fits.items()}
