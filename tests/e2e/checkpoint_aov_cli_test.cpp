@@ -34,11 +34,11 @@ TEST(CheckpointCli, AStoppedRenderResumedGivesTheBytesOfOneThatNeverStopped) {
     ASSERT_EQ(test::run_glint(scene + "-q --threads 2 -o '" + (dir / "whole.pfm").string() + "'").exit_code,
               0);
     const std::string checkpoint = (dir / "s.ckpt").string();
-    // A limit crossed by the first pass: the render stops after 1 sample and leaves the checkpoint.
+    // A limit crossed by the first pass: the render stops after 2 samples and leaves the checkpoint.
     const auto stopped = test::run_glint(scene + "--threads 1 --time-limit 1e-9 --checkpoint '" + checkpoint +
                                          "' -o '" + (dir / "stopped.pfm").string() + "'");
     ASSERT_EQ(stopped.exit_code, 0) << stopped.output;
-    EXPECT_NE(stopped.output.find("holds 1 of 40 samples"), std::string::npos) << stopped.output;
+    EXPECT_NE(stopped.output.find("holds 2 of 40 samples"), std::string::npos) << stopped.output;
     ASSERT_TRUE(std::filesystem::exists(checkpoint));
 
     // Another render's checkpoint is refused, and nothing is written.

@@ -14,7 +14,7 @@ namespace glint {
 namespace {
 
 // A path-traced scene with glass, so that paths differ in length and the sums in many bits; 40 samples
-// take the passes 1, 2, 4, 8, 16 and then 9 (after 1, 3, 7, 15 and 31 samples a render can stop).
+// take the passes 2, 4, 8, 16 and then 10 (after 2, 6, 14 and 30 samples a render can stop).
 const char* kScene =
     "render: {width: 20, height: 14, samples: 40, integrator: path}\n"
     "camera: {eye: [0, 1, 5], look_at: [0, 0, 0], fov: 40}\n"
@@ -65,7 +65,7 @@ TEST(Checkpoint, AResumedRenderHasTheBitsOfOneThatNeverStopped) {
     const Checkpoint whole = render_until(scene, 2, 0);
     ASSERT_EQ(whole.samples_done, 40u);
 
-    for (const std::uint32_t stop_at : {1u, 3u, 7u, 15u, 31u}) {
+    for (const std::uint32_t stop_at : {2u, 6u, 14u, 30u}) {
         const Checkpoint stopped = render_until(scene, 1, stop_at);
         ASSERT_EQ(stopped.samples_done, stop_at);
         const std::vector<unsigned char> bytes = encode_checkpoint(stopped);
@@ -81,6 +81,25 @@ TEST(Checkpoint, AResumedRenderHasTheBitsOfOneThatNeverStopped) {
         const RenderStats stats = render(*scene.world, scene.view, read.film, resume);
         EXPECT_EQ(stats.samples_per_pixel, 40u);
         expect_same_film(read.film, whole.film);
+    }
+}
+
+TEST(Checkpoint, AResumeAfterACountThePassesNeverStopAtHasTheBitsOfOneThatNeverStopped) {
+    // A checkpoint of a glint whose passes were 1, 2, 4, … stopped after 1, 3 or 7 samples, where today's
+    // passes never stop: made here by a render of that many samples (sobol's sample i is the same
+    // whatever the count), then resumed to 40.
+    Scene scene = test::scene_from_text(kScene);
+    const Checkpoint whole = render_until(scene, 2, 0);
+    for (const std::uint32_t stopped_after : {1u, 3u, 7u}) {
+        RenderFlags fewer;
+        fewer.samples_per_pixel = stopped_after;
+        Film film = test::render_film(test::scene_from_text(kScene, fewer));
+        ASSERT_EQ(film.raw_pixel(10, 7).count, stopped_after);
+        RenderCallbacks resume;
+        resume.resume_after_samples = stopped_after;
+        const RenderStats stats = render(*scene.world, scene.view, film, resume);
+        EXPECT_EQ(stats.samples_per_pixel, 40u);
+        expect_same_film(film, whole.film);
     }
 }
 

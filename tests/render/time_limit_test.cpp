@@ -17,19 +17,19 @@ TEST(TimeLimit, StopsAfterThePassThatCrossesItWithTheImageOfThatManySamples) {
     const Scene scene = test::scene_from_text(kScene);
     Film limited(24, 16);
     RenderCallbacks callbacks;
-    callbacks.time_limit_seconds = 1e-9;  // crossed by the first pass, which takes sample 0 alone
+    callbacks.time_limit_seconds = 1e-9;  // crossed by the first pass, which takes samples 0 and 1
     const RenderStats stats = render(*scene.world, scene.view, limited, callbacks);
     EXPECT_TRUE(stats.time_limit_reached);
     EXPECT_FALSE(stats.cancelled);
-    ASSERT_EQ(stats.samples_per_pixel, 1u);
+    ASSERT_EQ(stats.samples_per_pixel, 2u);
 
-    RenderFlags one_sample;
-    one_sample.samples_per_pixel = 1;
-    const Film reference = test::render_film(test::scene_from_text(kScene, one_sample));
+    RenderFlags two_samples;
+    two_samples.samples_per_pixel = 2;
+    const Film reference = test::render_film(test::scene_from_text(kScene, two_samples));
     for (int y = 0; y < 16; ++y) {
         for (int x = 0; x < 24; ++x) {
             ASSERT_EQ(limited.pixel(x, y).r, reference.pixel(x, y).r) << x << ", " << y;
-            ASSERT_EQ(limited.sample_count(x, y), 1u);
+            ASSERT_EQ(limited.sample_count(x, y), 2u);
         }
     }
 }

@@ -15,9 +15,17 @@ namespace glint {
 
 namespace {
 
-// Passes grow 1, 2, 4, 8, then stay at 16 samples: the first picture comes at once, and later passes
+// Passes grow 2, 4, 8, then stay at 16 samples: the first picture comes soon, and later passes
 // amortise the per-tile overhead. A small remainder joins the last pass (see next_pass_samples).
 constexpr std::uint32_t kMaxPassSamples = 16;
+// The first pass takes two samples a pixel, not one: a pass of two draws its samples' camera and
+// integrator points together (sobol: in AVX2 lanes) and hashes each pixel once, where a pass of one
+// draws each sample's alone. Two samples a pixel cost less than twice one (bench/ab.py, CPU time): the
+// Cornell box at 3 spp, one pass where it was 1 + 2, took 0.93 of the time on one thread and 0.91 on
+// two; at 2 spp, one pass where it was 1 + 1, 0.96 on one thread; RTIOW's final scene and smallpt's
+// at 7 to 32 spp within noise. The live preview shows its coarse picture (coarse_preview) before the
+// first pass, so a pass of one sample is not what makes it quick.
+constexpr std::uint32_t kFirstPassSamples = 2;
 
 // Runs `body(index)` for every index in [0, count) on all cores; false if `cancelled` said so first.
 template <typename Body>
@@ -90,18 +98,19 @@ void ProgressiveRender::resume_after(std::uint32_t samples) {
 
 std::uint32_t ProgressiveRender::next_pass_samples() const {
     const std::uint32_t remaining = target_ - std::min(done_, target_);
-    const std::uint32_t growing = std::min(done_ + 1, kMaxPassSamples);
+    const std::uint32_t growing = std::min(done_ + kFirstPassSamples, kMaxPassSamples);
     if (remaining <= growing) {
         return remaining;
     }
-    // The growing passes add up to 2^k - 1, so a power-of-two target, the usual one, ended in a pass of
-    // one sample (from 4 samples on): a whole pass over the image for it. A remainder of at most half a
-    // pass is taken with this pass when both fit in one. (When it was made, a one-sample pass took its
-    // samples one at a time, and the merge gave RTIOW at 4 spp 0.946 of the time. Now that such a pass is
-    // batched across pixels, the merge is within noise: RTIOW at 16 spp took 0.987 (0.955–1.046) of the
-    // time without it.) (Beyond that, splitting them evenly, 32 samples as 1 + 2 + 4 + 8 + 8 + 9, cost a
-    // pass's per-pixel set-up more than the one-sample pass of 1 + 2 + 4 + 8 + 16 + 1 cost: 1.019 of RTIOW's
-    // time.)
+    // The growing passes add up to 2^k - 2, so a power-of-two target, the usual one, would end in a
+    // pass of two samples: a whole pass over the image for them. A remainder of at most half a pass is
+    // taken with this pass when both fit in one: 3 samples are one pass, 8 are 2 + 6, 16 are 2 + 4 + 10
+    // (32 are 2 + 4 + 8 + 16 + 2). (When it was made, the passes began with one sample and a
+    // one-sample pass took its samples one at a time; the merge gave RTIOW at 4 spp 0.946 of the time.
+    // Once such a pass was batched across pixels, it measured within noise: RTIOW at 16 spp took 0.987
+    // (0.955–1.046) of the time without it.) (Splitting a larger remainder evenly, 32 samples as
+    // 1 + 2 + 4 + 8 + 8 + 9, cost a pass's per-pixel set-up more than the small last pass of
+    // 1 + 2 + 4 + 8 + 16 + 1 cost: 1.019 of RTIOW's time.)
     if (remaining <= kMaxPassSamples && 2 * (remaining - growing) <= growing) {
         return remaining;
     }
