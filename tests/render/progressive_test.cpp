@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <limits>
 #include <string>
 #include <vector>
@@ -26,6 +27,8 @@ Scene small_default_scene(std::uint32_t spp) {
 
 TEST(ProgressiveRender, AllPassesGiveTheBitsOfRender) {
     const Scene scene = small_default_scene(25);  // jittered: 25 = 5×5, passes 2+4+8+11
+    // render() with no one watching its passes takes them 16 samples at a time (16 + 9): the same bits
+    // as the growing passes below.
     Film expected(40, 23);
     const RenderStats stats = render(scene, expected);
 
@@ -42,25 +45,29 @@ TEST(ProgressiveRender, AllPassesGiveTheBitsOfRender) {
     EXPECT_EQ(progressive.film().sample_count(39, 22), 25u);
 }
 
+// A render of `target` samples a pixel of a 3×2 image (one tile), in passes sized by `sizes`: the
+// samples each pass took.
+std::vector<std::uint32_t> pass_sizes(std::uint32_t target, PassSizes sizes) {
+    // A pattern that takes any count as it is (jittered rounds it up to a square).
+    const Scene scene = test::scene_from_text(
+        "render: {width: 3, height: 2, sampler: random, samples: " + std::to_string(target) + "}\n");
+    ProgressiveRender progressive(*scene.world, scene.view, sizes);
+    EXPECT_EQ(progressive.target_samples(), target);
+    std::vector<std::uint32_t> taken;
+    while (!progressive.complete()) {
+        taken.push_back(progressive.next_pass_samples());
+        const std::uint32_t before = progressive.samples_done();
+        EXPECT_TRUE(progressive.next_pass());
+        EXPECT_EQ(progressive.samples_done() - before, taken.back());
+    }
+    return taken;
+}
+
 TEST(ProgressiveRender, PassesGrowAndLeaveNoSmallLastPass) {
     // Passes of 2, 4, 8, then 16 samples (the first of two: a pass of one draws its samples' points one
     // by one), and a remainder of at most half a pass taken with the last one when both fit in one pass:
     // 3 samples are one pass, and 16 are 2 + 4 + 10, not 2 + 4 + 8 + 2.
-    const auto passes = [](std::uint32_t target) {
-        // A pattern that takes any count as it is (jittered rounds it up to a square).
-        const Scene scene = test::scene_from_text(
-            "render: {width: 3, height: 2, sampler: random, samples: " + std::to_string(target) + "}\n");
-        ProgressiveRender progressive(*scene.world, scene.view);
-        EXPECT_EQ(progressive.target_samples(), target);
-        std::vector<std::uint32_t> sizes;
-        while (!progressive.complete()) {
-            sizes.push_back(progressive.next_pass_samples());
-            const std::uint32_t before = progressive.samples_done();
-            EXPECT_TRUE(progressive.next_pass());
-            EXPECT_EQ(progressive.samples_done() - before, sizes.back());
-        }
-        return sizes;
-    };
+    const auto passes = [](std::uint32_t target) { return pass_sizes(target, PassSizes::kGrowing); };
     using Passes = std::vector<std::uint32_t>;
     EXPECT_EQ(passes(1), (Passes{1}));
     EXPECT_EQ(passes(2), (Passes{2}));
@@ -89,6 +96,46 @@ TEST(ProgressiveRender, PassesGrowAndLeaveNoSmallLastPass) {
         }
         EXPECT_EQ(done, target);
     }
+}
+
+TEST(ProgressiveRender, FullPassesTakeSixteenSamplesFromTheFirst) {
+    using Passes = std::vector<std::uint32_t>;
+    EXPECT_EQ(pass_sizes(1, PassSizes::kFull), (Passes{1}));
+    EXPECT_EQ(pass_sizes(3, PassSizes::kFull), (Passes{3}));
+    EXPECT_EQ(pass_sizes(16, PassSizes::kFull), (Passes{16}));
+    EXPECT_EQ(pass_sizes(17, PassSizes::kFull), (Passes{16, 1}));
+    EXPECT_EQ(pass_sizes(32, PassSizes::kFull), (Passes{16, 16}));
+    EXPECT_EQ(pass_sizes(40, PassSizes::kFull), (Passes{16, 16, 8}));
+}
+
+// render() grows its passes only for a caller that sees or stops at their ends (a time limit, or
+// pass_done, which writes checkpoints), and takes 16 samples at a time otherwise, Ctrl-C's
+// stop_after_pass included. Seen through the progress of a one-tile image, reported once a pass (and
+// once more at the end), as a fraction of the samples.
+TEST(ProgressiveRender, RenderGrowsItsPassesOnlyWhenTheirEndsAreWatched) {
+    const Scene scene =
+        test::scene_from_text("render: {width: 3, height: 2, sampler: random, samples: 32}\n");
+    const auto progress = [&](RenderCallbacks callbacks) {
+        std::vector<double> fractions;
+        callbacks.progress = [&](double fraction) { fractions.push_back(fraction); };
+        Film film(3, 2);
+        render(scene, film, callbacks);
+        return fractions;
+    };
+    using Fractions = std::vector<double>;
+    const Fractions full{16.0 / 32, 1, 1};
+    const Fractions growing{2.0 / 32, 6.0 / 32, 14.0 / 32, 30.0 / 32, 1, 1};  // 2 + 4 + 8 + 16 + 2
+    EXPECT_EQ(progress({}), full);
+    const std::atomic<bool> never{false};
+    RenderCallbacks stoppable;
+    stoppable.stop_after_pass = &never;
+    EXPECT_EQ(progress(stoppable), full);
+    RenderCallbacks limited;
+    limited.time_limit_seconds = 1e9;
+    EXPECT_EQ(progress(limited), growing);
+    RenderCallbacks watched;
+    watched.pass_done = [](const Film&, std::uint32_t) {};
+    EXPECT_EQ(progress(watched), growing);
 }
 
 // Renders `jobs` at once with render_batch and checks that each sample gets, to the bit, what

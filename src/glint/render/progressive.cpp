@@ -15,8 +15,9 @@ namespace glint {
 
 namespace {
 
-// Passes grow 2, 4, 8, then stay at 16 samples: the first picture comes soon, and later passes
-// amortise the per-tile overhead. A small remainder joins the last pass (see next_pass_samples).
+// Passes grow 2, 4, 8, then stay at 16 samples (PassSizes::kGrowing): the first picture comes soon, and
+// later passes amortise the per-tile overhead. A small remainder joins the last pass (see
+// next_pass_samples). PassSizes::kFull takes 16 at a time from the start.
 constexpr std::uint32_t kMaxPassSamples = 16;
 // The first pass takes two samples a pixel, not one: a pass of two draws its samples' camera and
 // integrator points together (sobol: in AVX2 lanes) and hashes each pixel once, where a pass of one
@@ -46,13 +47,17 @@ bool parallel_tiles(std::size_t count, const ProgressiveRender::CancelCheck& can
 
 }  // namespace
 
-ProgressiveRender::ProgressiveRender(const World& world, const View& view)
-    : world_(world), view_(view), own_film_(view.settings.width, view.settings.height), film_(own_film_) {
+ProgressiveRender::ProgressiveRender(const World& world, const View& view, PassSizes passes)
+    : world_(world),
+      view_(view),
+      own_film_(view.settings.width, view.settings.height),
+      film_(own_film_),
+      pass_sizes_(passes) {
     plan();
 }
 
-ProgressiveRender::ProgressiveRender(const World& world, const View& view, Film& film)
-    : world_(world), view_(view), own_film_(0, 0), film_(film) {
+ProgressiveRender::ProgressiveRender(const World& world, const View& view, Film& film, PassSizes passes)
+    : world_(world), view_(view), own_film_(0, 0), film_(film), pass_sizes_(passes) {
     if (film.width() != view.settings.width || film.height() != view.settings.height) {
         throw std::invalid_argument("render: the film's size differs from the settings'");
     }
@@ -98,6 +103,9 @@ void ProgressiveRender::resume_after(std::uint32_t samples) {
 
 std::uint32_t ProgressiveRender::next_pass_samples() const {
     const std::uint32_t remaining = target_ - std::min(done_, target_);
+    if (pass_sizes_ == PassSizes::kFull) {
+        return std::min(remaining, kMaxPassSamples);
+    }
     const std::uint32_t growing = std::min(done_ + kFirstPassSamples, kMaxPassSamples);
     if (remaining <= growing) {
         return remaining;

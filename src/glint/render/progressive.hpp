@@ -2,7 +2,8 @@
 // pass at a time, showing each, and abandons it when the scene changes.
 //
 // The passes take samples 0–1, 2–5, 6–13, … (then 16 at a time; a remainder of at most half a pass
-// joins the last pass when both fit in 16, so 16 samples are 0–1, 2–5, 6–15) of every pixel in order,
+// joins the last pass when both fit in 16, so 16 samples are 0–1, 2–5, 6–15), or 16 at a time from the
+// start (PassSizes), of every pixel in order,
 // so the film's sums are added in the same order whatever the threads, tiles or cancellations of earlier
 // runs. Within a tile, a pass's samples are rendered in batches of whole pixels (render_batch).
 // Non-finite samples (NaN, ∞) are left out of the film, counted and the first one named (stats()).
@@ -19,6 +20,14 @@
 
 namespace glint {
 
+// How a render's passes are sized. Growing: 2, 4, 8, then 16 samples a pixel, for a caller that looks at
+// or stops at the ends of passes (the live preview, a time limit, checkpoints): the first picture comes
+// soon. Full: 16 at a time from the first pass, for a caller that wants only the finished image. A
+// pixel's samples of one pass go to the sampler's lanes, the camera and the integrator together, so a
+// few large passes cost less than many small ones (RTIOW's final scene at 16 spp, one pass instead of
+// 2 + 4 + 10: 0.92 of the time). The images are the same bits either way.
+enum class PassSizes { kGrowing, kFull };
+
 class ProgressiveRender {
   public:
     // Returns true when the work in progress should be abandoned (checked once per tile).
@@ -28,8 +37,9 @@ class ProgressiveRender {
 
     // `world` and `view` must outlive this object. The first form renders into a film of its own, the
     // second into `film`, which must have the view's size.
-    ProgressiveRender(const World& world, const View& view);
-    ProgressiveRender(const World& world, const View& view, Film& film);
+    ProgressiveRender(const World& world, const View& view, PassSizes passes = PassSizes::kGrowing);
+    ProgressiveRender(const World& world, const View& view, Film& film,
+                      PassSizes passes = PassSizes::kGrowing);
     ProgressiveRender(const ProgressiveRender&) = delete;
     ProgressiveRender& operator=(const ProgressiveRender&) = delete;
 
@@ -91,6 +101,7 @@ class ProgressiveRender {
     std::vector<Tile> tiles_;
     std::vector<TileTally> tallies_;
     RayCounters coarse_rays_;
+    PassSizes pass_sizes_;
     std::uint32_t target_ = 0;
     std::uint32_t done_ = 0;
     double seconds_ = 0;

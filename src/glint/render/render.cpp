@@ -113,7 +113,12 @@ Rgb render_sample(const World& world, const View& view, const Integrator& integr
 }
 
 RenderStats render(const World& world, const View& view, Film& film, const RenderCallbacks& callbacks) {
-    ProgressiveRender progressive(world, view, film);
+    // Small first passes only for a caller that sees or stops at the ends of passes: a time limit, or a
+    // pass_done (checkpoints). A stop_after_pass (Ctrl-C) waits for a pass of at most 16 samples either
+    // way, as it always did after the first few.
+    const PassSizes passes =
+        callbacks.pass_done || callbacks.time_limit_seconds > 0 ? PassSizes::kGrowing : PassSizes::kFull;
+    ProgressiveRender progressive(world, view, film, passes);
     std::optional<tbb::global_control> thread_limit;
     if (view.settings.threads > 0) {
         thread_limit.emplace(tbb::global_control::max_allowed_parallelism,

@@ -41,12 +41,14 @@ struct RenderCallbacks {
     // same number of samples (RenderStats::samples_per_pixel): what Ctrl-C asks for.
     const std::atomic<bool>* stop_after_pass = nullptr;
     // When positive: the render stops at the end of the first pass that ends this many seconds or more
-    // after it started (RenderStats::time_limit_reached), so every pixel has the same samples. Passes
-    // take samples 0, 1–2, 3–6, 7–14, then 16 at a time (ProgressiveRender), so the limit is overrun by at
-    // most one pass.
+    // after it started (RenderStats::time_limit_reached), so every pixel has the same samples. With a
+    // time limit the passes take samples 0–1, 2–5, 6–13, then 16 at a time (PassSizes::kGrowing), so the
+    // limit is overrun by at most one pass.
     double time_limit_seconds = 0;
     // Called after each complete pass, on the calling thread, with the samples every pixel now has: the
-    // film is then consistent, so this is where a checkpoint is written (render/checkpoint.hpp).
+    // film is then consistent, so this is where a checkpoint is written (render/checkpoint.hpp). When
+    // set, the passes grow as with a time limit; without it or a time limit, they take 16 samples at a
+    // time from the first (PassSizes::kFull), which costs less.
     std::function<void(const Film& film, std::uint32_t samples_done)> pass_done;
     // When positive: the film already holds this many samples of every pixel, from a checkpoint; the
     // render takes the rest, giving the bits of a render that never stopped.
