@@ -3,10 +3,10 @@
 //
 // The passes take samples 0–1, 2–5, 6–13, … (then 16 at a time; a remainder of at most half a pass
 // joins the last pass when both fit in 16, so 16 samples are 0–1, 2–5, 6–15), or 16 at a time from the
-// start (PassSizes), of every pixel in order,
-// so the film's sums are added in the same order whatever the threads, tiles or cancellations of earlier
-// runs. Within a tile, a pass's samples are rendered in batches of whole pixels (render_batch).
-// Non-finite samples (NaN, ∞) are left out of the film, counted and the first one named (stats()).
+// start (PassSizes), of every pixel in order, so the film's sums are added in the same order whatever
+// the threads, tiles or cancellations of earlier runs. Within a tile, a pass's samples are rendered in
+// batches of whole pixels (render_batch). Non-finite samples (NaN, ∞) are left out of the film, counted
+// and the first one named (stats()).
 #pragma once
 
 #include <cstdint>
