@@ -176,6 +176,24 @@ SurfaceRays surface_rays(const Bounds3& box, int count, std::uint64_t seed, Inte
     return out;
 }
 
+// Every field of two hit records, bit for bit: the same primitive's intersect must have filled both.
+inline void expect_identical_hits(const Hit& a, const Hit& b, bool mesh) {
+    const auto same_bits = [](const Vec3& x, const Vec3& y) {
+        return x.x == y.x && x.y == y.y && x.z == y.z;
+    };
+    EXPECT_EQ(a.primitive, b.primitive);
+    EXPECT_EQ(a.t, b.t);
+    EXPECT_TRUE(same_bits(a.point, b.point));
+    EXPECT_TRUE(same_bits(a.normal, b.normal));
+    EXPECT_TRUE(same_bits(a.shading_normal, b.shading_normal));
+    EXPECT_EQ(surface_uv(a).x, surface_uv(b).x);
+    EXPECT_EQ(surface_uv(a).y, surface_uv(b).y);
+    EXPECT_EQ(a.error, b.error);
+    if (mesh) {
+        EXPECT_EQ(a.element, b.element);  // other shapes leave `element` as it was
+    }
+}
+
 // Compares two accelerators on `rays`: same hit or miss, same primitive and element, same t.
 // hit.element is compared only where it means something: on meshes.
 // Embree's leeway, for a backend that chooses triangles in float: a different triangle of the same

@@ -20,6 +20,7 @@
 namespace glint {
 namespace {
 
+using test::expect_identical_hits;
 using test::expect_same_hits;
 using test::pointers;
 using test::random_direction;
@@ -39,24 +40,6 @@ TEST(Bvh, RandomSpheresGiveTheListsHits) {
         inside.push_back({random_in_box(rng, {-9, -9, -9}, {9, 9, 9}), random_direction(rng)});
     }
     expect_same_hits(list, bvh, inside, ptrs);
-}
-
-// Every field of two hit records, bit for bit: the same primitive's intersect must have filled both.
-void expect_identical_hits(const Hit& a, const Hit& b, bool mesh) {
-    const auto same_bits = [](const Vec3& x, const Vec3& y) {
-        return x.x == y.x && x.y == y.y && x.z == y.z;
-    };
-    EXPECT_EQ(a.primitive, b.primitive);
-    EXPECT_EQ(a.t, b.t);
-    EXPECT_TRUE(same_bits(a.point, b.point));
-    EXPECT_TRUE(same_bits(a.normal, b.normal));
-    EXPECT_TRUE(same_bits(a.shading_normal, b.shading_normal));
-    EXPECT_EQ(surface_uv(a).x, surface_uv(b).x);
-    EXPECT_EQ(surface_uv(a).y, surface_uv(b).y);
-    EXPECT_EQ(a.error, b.error);
-    if (mesh) {
-        EXPECT_EQ(a.element, b.element);  // other shapes leave `element` as it was
-    }
 }
 
 // Small scenes skip the tree and test every shape; the answers must be the very same bits as the

@@ -363,6 +363,51 @@ TEST(ProgressiveRender, SamplesTakenTogetherAreEachRenderSamplesBits) {
     }
 }
 
+// A tree of spheres through a thin lens, where BvhAccelerator traces the camera rays of radiances as
+// one packet: each path still gets radiance()'s bits, twin spheres (ties) included.
+TEST(ProgressiveRender, APacketOfCameraRaysGivesEachPathItsOwnBits) {
+    std::string text =
+        "render: {width: 4, height: 4, samples: 16, integrator: path, max_depth: 6}\n"
+        "camera: {type: thin-lens, eye: [0, 1, 6], look_at: [0, 0.5, 0], fov: 40, lens_radius: 0.1,"
+        " focus_distance: 6}\n"
+        "objects:\n";
+    for (int i = 0; i < 40; ++i) {
+        const double x = -2 + 0.1 * i;
+        const double z = -1 + 0.05 * (i % 7);
+        const std::string sphere = "  - {type: sphere, center: [" + std::to_string(x) + ", 0.3, " +
+                                   std::to_string(z) +
+                                   "], radius: 0.3, material: {type: matte, albedo: 0.7}}\n";
+        text += sphere;
+        if (i % 3 == 0) {
+            text += sphere;  // a twin: rays that hit one meet the other at the same t
+        }
+    }
+    text +=
+        "  - {type: sphere, center: [0, -1000, 0], radius: 1000, material: {type: matte, albedo: 0.5}}\n"
+        "background: [0.6, 0.7, 0.9]\n";
+    const Scene scene = test::scene_from_text(text);
+    for (const auto& [x, y] : {std::pair{1u, 2u}, std::pair{2u, 1u}, std::pair{3u, 3u}}) {
+        std::vector<Ray> camera_rays;
+        std::vector<SampleStream> streams;
+        for (std::uint32_t i = 0; i < 16; ++i) {
+            const SampleHashes key(SampleHashes::pixel_hash(1, x, y), i);
+            camera_rays.push_back(*camera_ray(scene.view, key, x, y));
+            streams.emplace_back(*scene.view.sampler, key, kFirstIntegratorDimension);
+        }
+        std::vector<Rgb> together(16);
+        RayCounters rays;
+        scene.view.integrator->radiances(*scene.world, camera_rays, streams, rays, together);
+        for (std::uint32_t i = 0; i < 16; ++i) {
+            SampleStream stream(*scene.view.sampler, SampleHashes(SampleHashes::pixel_hash(1, x, y), i),
+                                kFirstIntegratorDimension);
+            const Rgb alone = scene.view.integrator->radiance(*scene.world, camera_rays[i], stream, rays);
+            EXPECT_EQ(together[i].r, alone.r) << x << ' ' << y << ' ' << i;
+            EXPECT_EQ(together[i].g, alone.g) << x << ' ' << y << ' ' << i;
+            EXPECT_EQ(together[i].b, alone.b) << x << ' ' << y << ' ' << i;
+        }
+    }
+}
+
 TEST(ProgressiveRender, CancelledPassIsNotCounted) {
     const Scene scene = small_default_scene(4);
     ProgressiveRender progressive(*scene.world, scene.view);

@@ -19,6 +19,14 @@ class Accelerator {
     // Nearest hit with t in (0, t_max); sets hit.primitive to the index of the shape in the list given
     // at construction.
     virtual bool intersect(const Ray& ray, double t_max, Hit& hit) const = 0;
+    // The nearest hits of n rays, as n calls of intersect would find them (found[k] for ray k); a
+    // backend may trace them together (rays that go the same way, such as a pixel's camera rays).
+    virtual void intersect_packet(const Ray* const* rays, int n, double t_max, Hit* const* hits,
+                                  bool* found) const {
+        for (int k = 0; k < n; ++k) {
+            found[k] = intersect(*rays[k], t_max, *hits[k]);
+        }
+    }
     // Any hit with t in (0, t_max).
     virtual bool occluded(const Ray& ray, double t_max) const = 0;
     virtual Bounds3 bounds() const = 0;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstring>
 #include <limits>
 #include <type_traits>
 
@@ -176,6 +177,97 @@ __attribute__((target("avx2"))) inline void test_sphere_lanes(const double* reco
     hit = _mm256_and_pd(hit, _mm256_cmp_pd(t, _mm256_set1_pd(t_limit), _CMP_LT_OQ));
     _mm256_store_pd(lanes.t, t);
     lanes.hit = static_cast<unsigned>(_mm256_movemask_pd(_mm256_and_pd(hit, is_sphere)));
+}
+
+// Four rays of a packet (field by field, lane k ray k) tested against one sphere at once: sphere_hit_t
+// with t_max = ∞ in each lane, operation for operation in the same order as test_sphere_lanes (so each
+// lane's t is the very double the scalar function computes). Returns the lanes hit (all bits set) and
+// their t in `t`.
+struct PacketRayLanes {
+    __m256d ox, oy, oz, dx, dy, dz, a, inverse_a;
+};
+__attribute__((target("avx2"))) inline __m256d test_sphere_rays(const double* record,
+                                                                const PacketRayLanes& rays, __m256d& t) {
+    // The record: centre x, y, z and radius.
+    const __m256d ocx = sub(rays.ox, _mm256_set1_pd(record[0]));
+    const __m256d ocy = sub(rays.oy, _mm256_set1_pd(record[1]));
+    const __m256d ocz = sub(rays.oz, _mm256_set1_pd(record[2]));
+    const __m256d radius = _mm256_set1_pd(record[3]);
+    const __m256d h = dot3(rays.dx, rays.dy, rays.dz, ocx, ocy, ocz);
+    const __m256d radius2 = mul(radius, radius);
+    const __m256d c = sub(dot3(ocx, ocy, ocz, ocx, ocy, ocz), radius2);
+    const __m256d h_over_a = mul(h, rays.inverse_a);
+    const __m256d lx = sub(ocx, mul(rays.dx, h_over_a));
+    const __m256d ly = sub(ocy, mul(rays.dy, h_over_a));
+    const __m256d lz = sub(ocz, mul(rays.dz, h_over_a));
+    const __m256d discriminant = mul(rays.a, sub(radius2, dot3(lx, ly, lz, lx, ly, lz)));
+    const __m256d zero = _mm256_setzero_pd();
+    const __m256d not_missed = _mm256_cmp_pd(discriminant, zero, _CMP_NLT_UQ);  // !(Δ < 0)
+    const __m256d left_behind =
+        _mm256_and_pd(_mm256_cmp_pd(h, zero, _CMP_GT_OQ), _mm256_cmp_pd(c, zero, _CMP_GE_OQ));
+    const __m256d candidate = _mm256_andnot_pd(left_behind, not_missed);
+    t = zero;
+    if (_mm256_movemask_pd(candidate) == 0) {
+        return zero;
+    }
+    const __m256d sign_bit = _mm256_set1_pd(-0.0);
+    const __m256d root =
+        _mm256_or_pd(_mm256_andnot_pd(sign_bit, _mm256_sqrt_pd(discriminant)), _mm256_and_pd(sign_bit, h));
+    const __m256d q = _mm256_xor_pd(add(h, root), sign_bit);
+    const __m256d near_root = mul(q, rays.inverse_a);
+    const __m256d far_root = _mm256_div_pd(c, q);
+    const __m256d swapped = _mm256_cmp_pd(near_root, far_root, _CMP_GT_OQ);
+    const __m256d t0 = _mm256_blendv_pd(near_root, far_root, swapped);
+    const __m256d t1 = _mm256_blendv_pd(far_root, near_root, swapped);
+    t = _mm256_blendv_pd(t1, t0, _mm256_cmp_pd(t0, zero, _CMP_GT_OQ));
+    __m256d hit = _mm256_and_pd(candidate, _mm256_cmp_pd(q, zero, _CMP_NEQ_UQ));
+    hit = _mm256_and_pd(hit, _mm256_cmp_pd(t, zero, _CMP_GT_OQ));
+    return _mm256_and_pd(hit, _mm256_cmp_pd(t, _mm256_set1_pd(kInf), _CMP_LT_OQ));
+}
+
+// A packet's rays field by field, four to a register (lanes beyond the packet's rays hold zeros and are
+// never read), with each ray's nearest hit so far.
+struct alignas(32) PacketRays {
+    static constexpr int kMax = WideBvh::kMaxPacket;
+    double ox[kMax], oy[kMax], oz[kMax], dx[kMax], dy[kMax], dz[kMax], a[kMax], inverse_a[kMax];
+    double nearest_t[kMax];      // each ray's t_max, lowered to its nearest hit
+    std::int64_t nearest[kMax];  // the position of its nearest sphere in the list
+};
+
+// Spheres first … first + count − 1 of a list (`records`: its sphere records, 4 doubles each) tested
+// against rays k … k + 3 of the packet, of which those in `group` (bit i for ray k + i) entered their
+// leaf: each ray's nearest hit lowered as a one-at-a-time loop over the spheres would lower it. Returns
+// the rays (bit i) whose nearest hit it lowered, and sets in `tied` those that met a sphere at their
+// nearest t of the moment.
+__attribute__((target("avx2"))) inline unsigned test_leaf_against_group(const double* records,
+                                                                        std::uint32_t first,
+                                                                        std::uint32_t count, PacketRays& p,
+                                                                        int k, unsigned group,
+                                                                        unsigned& tied) {
+    const PacketRayLanes lanes{load(p.ox + k), load(p.oy + k), load(p.oz + k), load(p.dx + k),
+                               load(p.dy + k), load(p.dz + k), load(p.a + k),  load(p.inverse_a + k)};
+    const __m256d in_leaf = _mm256_castsi256_pd(_mm256_cmpgt_epi64(
+        _mm256_and_si256(_mm256_set1_epi64x(group), _mm256_setr_epi64x(1, 2, 4, 8)), _mm256_setzero_si256()));
+    __m256d nearest_t = load(p.nearest_t + k);
+    __m256i nearest = _mm256_load_si256(reinterpret_cast<const __m256i*>(p.nearest + k));
+    unsigned closer_lanes = 0;
+    for (std::uint32_t i = 0; i < count; ++i) {
+        __m256d t;
+        const __m256d hit = _mm256_and_pd(in_leaf, test_sphere_rays(records + 4 * (first + i), lanes, t));
+        if (_mm256_movemask_pd(hit) == 0) {
+            continue;
+        }
+        const __m256d closer = _mm256_and_pd(hit, _mm256_cmp_pd(t, nearest_t, _CMP_LT_OQ));
+        const __m256d same = _mm256_and_pd(hit, _mm256_cmp_pd(t, nearest_t, _CMP_EQ_OQ));
+        nearest_t = _mm256_blendv_pd(nearest_t, t, closer);
+        nearest = _mm256_castpd_si256(_mm256_blendv_pd(
+            _mm256_castsi256_pd(nearest), _mm256_castsi256_pd(_mm256_set1_epi64x(first + i)), closer));
+        closer_lanes |= static_cast<unsigned>(_mm256_movemask_pd(closer));
+        tied |= static_cast<unsigned>(_mm256_movemask_pd(same));
+    }
+    _mm256_store_pd(p.nearest_t + k, nearest_t);
+    _mm256_store_si256(reinterpret_cast<__m256i*>(p.nearest + k), nearest);
+    return closer_lanes;
 }
 
 // Four rectangles of a block tested against a ray at once: Rectangle::solve in each lane, operation for
@@ -354,6 +446,10 @@ BvhAccelerator::BvhAccelerator(std::span<const Shape* const> shapes, std::size_t
     for (std::uint32_t position : bvh_.primitive_order()) {
         leaves_.add(shapes[bounded[position]], bounded[position]);
     }
+    // Packets only where they give every ray its own answer cheaply: a tree of spheres alone (tested
+    // inline, ties seen) and nothing outside it. What they save is the single ray's branches, which
+    // the AVX2 traversal pays.
+    packet_traversal_ = direct_.size() == 0 && leaves_.size() > 0 && leaves_.spheres_only();
     build_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
@@ -584,6 +680,82 @@ __attribute__((noinline)) bool BvhAccelerator::intersect_one_at_a_time(const Ray
                                                                        Hit& hit) const {
     return intersect_with<false>(ray, t_max, hit);
 }
+
+void BvhAccelerator::intersect_packet(const Ray* const* rays, int n, double t_max, Hit* const* hits,
+                                      bool* found) const {
+#ifdef GLINT_BVH_HAVE_AVX2_PATH
+    if (packet_traversal_ && WideBvh::uses_avx2()) {
+        for (int first = 0; first < n; first += WideBvh::kMaxPacket) {
+            const int count = std::min(n - first, WideBvh::kMaxPacket);
+            intersect_packet_avx2(rays + first, count, t_max, hits + first, found + first);
+        }
+        return;
+    }
+#endif
+    for (int k = 0; k < n; ++k) {
+        found[k] = intersect(*rays[k], t_max, *hits[k]);
+    }
+}
+
+#ifdef GLINT_BVH_HAVE_AVX2_PATH
+// Compiled for AVX2 and flattened, as intersect_avx2 is: the traversal, the leaf tests and the node
+// tests in one function.
+__attribute__((target("avx2,fma"), flatten)) void BvhAccelerator::intersect_packet_avx2(
+    const Ray* const* rays, int n, double t_max, Hit* const* hits, bool* found) const {
+    constexpr int kMax = WideBvh::kMaxPacket;
+    PacketRays p;
+    std::memset(&p, 0, sizeof p);
+    for (int k = 0; k < n; ++k) {
+        const Ray& ray = *rays[k];
+        p.ox[k] = ray.origin.x;
+        p.oy[k] = ray.origin.y;
+        p.oz[k] = ray.origin.z;
+        p.dx[k] = ray.direction.x;
+        p.dy[k] = ray.direction.y;
+        p.dz[k] = ray.direction.z;
+        p.a[k] = dot(ray.direction, ray.direction);
+        p.inverse_a[k] = inverse_length_squared(ray.direction);
+        p.nearest_t[k] = t_max;
+    }
+    unsigned hit_rays = 0;
+    // Rays that met two spheres at the same nearest t: which one their own traversal finds depends on
+    // the order it visits them (the first wins), and the packet's order is not theirs. They are traced
+    // again alone, so that a ray's hit never depends on the rays beside it.
+    unsigned tied = 0;
+    const auto leaf = [&](unsigned packet_rays, std::uint32_t first, std::uint32_t count) {
+        unsigned lowered = 0;
+        for (int g = 0; g < kMax / 4; ++g) {
+            const unsigned group = (packet_rays >> (4 * g)) & 0xFu;
+            if (group == 0) {
+                continue;
+            }
+            const int k = 4 * g;
+            unsigned tied_lanes = 0;
+            const unsigned closer_lanes =
+                test_leaf_against_group(&leaves_.spheres[0].center.x, first, count, p, k, group, tied_lanes);
+            lowered |= closer_lanes << k;
+            tied |= tied_lanes << k;
+        }
+        hit_rays |= lowered;
+        return lowered;
+    };
+    bvh_.intersect_packet(rays, n, p.nearest_t, leaf);
+    for (int k = 0; k < n; ++k) {
+        const auto bit = 1u << k;
+        if ((tied & bit) != 0) {
+            found[k] = intersect(*rays[k], t_max, *hits[k]);
+        } else if ((hit_rays & bit) != 0) {
+            const auto position = static_cast<std::size_t>(p.nearest[k]);
+            static_cast<const Sphere*>(leaves_.shapes[position])
+                ->fill_hit(*rays[k], p.nearest_t[k], *hits[k]);
+            hits[k]->primitive = leaves_.scene_index[position];
+            found[k] = true;
+        } else {
+            found[k] = false;
+        }
+    }
+}
+#endif
 
 bool BvhAccelerator::occluded(const Ray& ray, double t_max) const {
 #ifdef GLINT_BVH_HAVE_AVX2_PATH

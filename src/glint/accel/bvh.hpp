@@ -24,6 +24,12 @@ class BvhAccelerator final : public Accelerator {
                             std::size_t flat_max_shapes = kFlatMaxShapes);
     bool intersect(const Ray& ray, double t_max, Hit& hit) const override;
     bool occluded(const Ray& ray, double t_max) const override;
+    // A tree of spheres with nothing outside it (RTIOW's scenes) is traced in packets of up to
+    // WideBvh::kMaxPacket rays, each sphere tested against four rays at once in AVX2 lanes; any other
+    // scene one ray at a time. Either way each ray gets intersect's bits: a ray of a packet that met
+    // two spheres at the same t is traced again alone.
+    void intersect_packet(const Ray* const* rays, int n, double t_max, Hit* const* hits,
+                          bool* found) const override;
     Bounds3 bounds() const override { return bounds_; }
     // The box of the bounded shapes alone (bounds() is infinite as soon as there is a plane).
     const Bounds3& bounded_bounds() const { return bounded_bounds_; }
@@ -101,6 +107,9 @@ class BvhAccelerator final : public Accelerator {
     // scalar traversal), kept out of line so that intersect() stays a small dispatch.
     bool intersect_one_at_a_time(const Ray& ray, double t_max, Hit& hit) const;
     bool occluded_one_at_a_time(const Ray& ray, double t_max) const;
+    // intersect_packet for at most WideBvh::kMaxPacket rays, when packet_traversal_.
+    void intersect_packet_avx2(const Ray* const* rays, int n, double t_max, Hit* const* hits,
+                               bool* found) const;
 
     ShapeList leaves_;                 // the tree's, in its leaf order
     ShapeList direct_;                 // tested for every ray: unbounded first, then by scene index
@@ -109,6 +118,7 @@ class BvhAccelerator final : public Accelerator {
     Bounds3 bounds_;
     Bounds3 bounded_bounds_;
     double build_seconds_ = 0;
+    bool packet_traversal_ = false;  // intersect_packet traces packets (see the constructor)
 };
 
 }  // namespace glint

@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cassert>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -120,6 +121,21 @@ class WideBvh {
     // Any hit: `leaf(first, count, t_max, avx2)` returns whether any primitive is hit before t_max.
     template <class Leaf>
     bool occluded(const Ray& ray, double t_max, Leaf&& leaf) const;
+    // Nearest hits of n rays that go much the same way (a pixel's camera rays), as a packet: one walk of
+    // the tree for all of them, which tests a node's boxes for each ray that entered the node, and a
+    // leaf for each ray that entered the leaf, each with its own t_max. A ray alone branches on each
+    // node's answer, and a branch it mispredicts or waits for stalls it; in a packet, coherent rays
+    // share the branches and their box tests overlap. A ray meets every box it would meet alone, but in
+    // the packet's order (the nearest of its rays' entry points first) and so sometimes a box that its
+    // own hits would have culled first: the same nearest hits, except that ties in t may fall the
+    // other way (the owner must settle those: BvhAccelerator traces such rays again alone).
+    // `leaf(rays, first, count)` tests primitives [first, first + count) for each ray k whose bit is
+    // set in `rays`, lowering t_max[k] to the nearest hit it finds, and returns the bits of the rays
+    // whose t_max it lowered. At most kMaxPacket rays; without AVX2, or with a ray beyond float's
+    // range (beyond_float_traversal), they go one at a time through intersect.
+    static constexpr int kMaxPacket = 16;
+    template <class Leaf>
+    void intersect_packet(const Ray* const* rays, int n, double* t_max, Leaf&& leaf) const;
 
     // A ray prepared for the box tests (public for the node tests in bvh_detail).
     struct TraversalRay;
@@ -168,6 +184,8 @@ class WideBvh {
     template <bool kAnyHit, class NodeTest, class Leaf>
     bool traverse(const Ray& ray, double& t_max, Leaf& leaf) const;
 #ifdef GLINT_BVH_HAVE_AVX2_PATH
+    template <class Leaf>
+    void traverse_packet_avx2(const Ray* const* rays, int n, double* t_max, Leaf& leaf) const;
     // Every leaf in turn, for rays the box tests cannot take (beyond_float_traversal).
     template <bool kAnyHit, class Leaf>
     bool every_leaf(double& t_max, Leaf& leaf) const {
@@ -226,6 +244,7 @@ struct WideBvh::TraversalRay {
     static constexpr double kFarGrowth = 1 + 4e-7;
 
     // `largest_inverse` is the tree's (WideBvh::largest_inverse_): see there.
+    TraversalRay() = default;
     TraversalRay(const Ray& ray, double largest_inverse) {
         for (int a = 0; a < 3; ++a) {
             // A zero component gives ±inf; a finite stand-in keeps 0 · inf (NaN) out of the slab test.
@@ -275,7 +294,24 @@ struct Avx2NodeTest {
     __attribute__((target("avx2,fma"))) static inline unsigned hits(const WideBvhNode& node,
                                                                     const WideBvh::TraversalRay& r,
                                                                     float t_far, float* t_near_out);
+    // The same in lanes: where the ray enters each box (`t_near`), and the boxes it enters before t_far
+    // (all bits set in their lanes).
+    __attribute__((target("avx2,fma"))) static inline __m256 enters(const WideBvhNode& node,
+                                                                    const WideBvh::TraversalRay& r,
+                                                                    float t_far, __m256& t_near);
 };
+#endif
+
+#ifdef GLINT_BVH_HAVE_AVX2_PATH
+// The rays of a packet (bit k for t_far[k], 16 of them) whose far limit is before t_near.
+__attribute__((target("avx2,fma"))) inline unsigned rays_done_before(const float* t_far, float t_near) {
+    const __m256 t = _mm256_set1_ps(t_near);
+    const auto low =
+        static_cast<unsigned>(_mm256_movemask_ps(_mm256_cmp_ps(_mm256_load_ps(t_far), t, _CMP_LT_OQ)));
+    const auto high =
+        static_cast<unsigned>(_mm256_movemask_ps(_mm256_cmp_ps(_mm256_load_ps(t_far + 8), t, _CMP_LT_OQ)));
+    return low | high << 8;
+}
 #endif
 
 // A pending subtree: what the stack holds.
@@ -323,6 +359,14 @@ __attribute__((target("avx2,fma"))) inline __m256 bvh_detail::crossings(const Wi
 
 __attribute__((target("avx2,fma"))) inline unsigned bvh_detail::Avx2NodeTest::hits(
     const WideBvhNode& node, const WideBvh::TraversalRay& r, float t_far, float* t_near_out) {
+    __m256 t_near;
+    const __m256 entered = enters(node, r, t_far, t_near);
+    _mm256_storeu_ps(t_near_out, t_near);
+    return static_cast<unsigned>(_mm256_movemask_ps(entered));
+}
+
+__attribute__((target("avx2,fma"))) inline __m256 bvh_detail::Avx2NodeTest::enters(
+    const WideBvhNode& node, const WideBvh::TraversalRay& r, float t_far, __m256& t_near) {
     const __m256 near_x = crossings(node, r.near_offset[0], r.inv[0], r.origin_inv[0]);
     const __m256 near_y = crossings(node, r.near_offset[1], r.inv[1], r.origin_inv[1]);
     const __m256 near_z = crossings(node, r.near_offset[2], r.inv[2], r.origin_inv[2]);
@@ -338,8 +382,8 @@ __attribute__((target("avx2,fma"))) inline unsigned bvh_detail::Avx2NodeTest::hi
     const __m256 t0 =
         _mm256_max_ps(_mm256_max_ps(near_y, near_z), _mm256_max_ps(near_x, _mm256_setzero_ps()));
     const __m256 t1 = _mm256_min_ps(_mm256_min_ps(far_y, far_z), _mm256_min_ps(far_x, _mm256_set1_ps(t_far)));
-    _mm256_storeu_ps(t_near_out, t0);
-    return static_cast<unsigned>(_mm256_movemask_ps(_mm256_cmp_ps(t0, t1, _CMP_LE_OQ)));
+    t_near = t0;
+    return _mm256_cmp_ps(t0, t1, _CMP_LE_OQ);
 }
 #endif
 
@@ -466,6 +510,120 @@ bool WideBvh::occluded(const Ray& ray, double t_max, Leaf&& leaf) const {
     }
 #endif
     return traverse<true, bvh_detail::ScalarNodeTest>(ray, t_max, leaf);
+}
+
+#ifdef GLINT_BVH_HAVE_AVX2_PATH
+template <class Leaf>
+__attribute__((target("avx2,fma"))) void WideBvh::traverse_packet_avx2(const Ray* const* rays, int n,
+                                                                       double* t_max, Leaf& leaf) const {
+    // A pending subtree and the rays that entered its box.
+    struct PacketEntry {
+        std::uint32_t child;
+        std::uint32_t count;
+        std::uint32_t rays;  // bit k: ray k entered the box before its t_far of the time
+        float t_near;        // the nearest of their entry points
+    };
+    TraversalRay r[kMaxPacket];
+    // Every ray's far limit, 16 lanes for the tests on popping (rays beyond n never enter anything).
+    static_assert(kMaxPacket == 16);
+    alignas(32) float t_far[kMaxPacket];
+    for (int k = 0; k < kMaxPacket; ++k) {
+        t_far[k] = -std::numeric_limits<float>::infinity();
+    }
+    for (int k = 0; k < n; ++k) {
+        r[k] = TraversalRay(*rays[k], largest_inverse_);
+        t_far[k] = bvh_detail::far_limit(t_max[k]);
+    }
+    constexpr int kStackSize = 1024;
+    static_assert(kStackSize >= (WideBvhNode::kWidth - 1) * kMaxDepth + 1);
+    PacketEntry stack[kStackSize];
+    int top = 0;
+    PacketEntry entry{0, 0, (1u << n) - 1, 0.0f};  // the root, entered by all
+    const __m256 infinity = _mm256_set1_ps(std::numeric_limits<float>::infinity());
+    while (true) {
+        if (entry.count > 0) {
+            for (unsigned lowered = leaf(entry.rays, entry.child, entry.count); lowered != 0;
+                 lowered &= lowered - 1) {
+                const int k = __builtin_ctz(lowered);
+                t_far[k] = bvh_detail::far_limit(t_max[k]);
+            }
+        } else {
+            // Each ray in the box tests the node's 8 boxes, as Avx2NodeTest does; their answers are
+            // gathered per child: which rays enter it (bit k of a lane) and the nearest entry point.
+            const WideBvhNode& node = nodes_[entry.child];
+            __m256i rays_in = _mm256_setzero_si256();
+            __m256 nearest = infinity;
+            for (unsigned m = entry.rays; m != 0; m &= m - 1) {
+                const int k = __builtin_ctz(m);
+                __m256 t0;
+                const __m256 entered = bvh_detail::Avx2NodeTest::enters(node, r[k], t_far[k], t0);
+                nearest = _mm256_min_ps(nearest, _mm256_blendv_ps(infinity, t0, entered));
+                rays_in = _mm256_or_si256(
+                    rays_in, _mm256_and_si256(_mm256_castps_si256(entered), _mm256_set1_epi32(1 << k)));
+            }
+            alignas(32) std::uint32_t rays_of[WideBvhNode::kWidth];
+            alignas(32) float t_near[WideBvhNode::kWidth];
+            _mm256_store_si256(reinterpret_cast<__m256i*>(rays_of), rays_in);
+            _mm256_store_ps(t_near, nearest);
+            unsigned mask = static_cast<unsigned>(
+                _mm256_movemask_ps(_mm256_castsi256_ps(_mm256_cmpgt_epi32(rays_in, _mm256_setzero_si256()))));
+            if (mask != 0 && (mask & (mask - 1)) == 0) {
+                const int i = __builtin_ctz(mask);
+                entry = {node.child[i], node.count[i], rays_of[i], t_near[i]};
+                continue;
+            }
+            // Far to near, as the single ray's traversal pushes them, by the nearest entry point.
+            const int base = top;
+            while (mask != 0) {
+                const int i = __builtin_ctz(mask);
+                mask &= mask - 1;
+                const PacketEntry e{node.child[i], node.count[i], rays_of[i], t_near[i]};
+                prefetch_child(e.child, e.count);
+                int j = top++;
+                while (j > base && stack[j - 1].t_near < e.t_near) {
+                    stack[j] = stack[j - 1];
+                    --j;
+                }
+                stack[j] = e;
+            }
+        }
+        // The next pending subtree, with the rays that may still find a nearer hit in it: a ray enters
+        // the box no sooner than the entry's t_near, so one whose t_far is below that is done with it.
+        while (true) {
+            if (top == 0) {
+                return;
+            }
+            entry = stack[--top];
+            entry.rays &= ~bvh_detail::rays_done_before(t_far, entry.t_near);
+            if (entry.rays != 0) {
+                break;
+            }
+        }
+    }
+}
+#endif
+
+template <class Leaf>
+void WideBvh::intersect_packet(const Ray* const* rays, int n, double* t_max, Leaf&& leaf) const {
+    assert(n <= kMaxPacket);
+    if (n <= 0 || nodes_.empty()) {
+        return;
+    }
+#ifdef GLINT_BVH_HAVE_AVX2_PATH
+    bool fits = uses_avx2();
+    for (int k = 0; k < n && fits; ++k) {
+        fits = !beyond_float_traversal(*rays[k]);
+    }
+    if (fits) {
+        traverse_packet_avx2(rays, n, t_max, leaf);
+        return;
+    }
+#endif
+    for (int k = 0; k < n; ++k) {
+        intersect(*rays[k], t_max[k], [&](std::uint32_t first, std::uint32_t count, double&, auto) {
+            return leaf(1u << k, first, count) != 0;
+        });
+    }
 }
 
 }  // namespace glint

@@ -193,7 +193,22 @@ void PathIntegrator::radiances(const World& world, std::span<const Ray> camera_r
         FixedVector<Path, kTogether> paths;
         for (std::size_t i = 0; i < count; ++i) {
             ++rays.camera;
-            trace(world, paths.emplace_back(camera_rays[start + i], streams[start + i]));
+            paths.emplace_back(camera_rays[start + i], streams[start + i]);
+        }
+        // The camera rays together: they leave one pixel (or a few neighbours) in much the same direction, so
+        // an accelerator may trace them as one packet (BvhAccelerator does for trees of spheres).
+        const Ray* packet_rays[kTogether];
+        Hit* packet_hits[kTogether];
+        bool found[kTogether];
+        for (std::size_t i = 0; i < count; ++i) {
+            Path& path = paths[i];
+            *path.current = Hit{};
+            packet_rays[i] = &path.ray;
+            packet_hits[i] = path.current;
+        }
+        world.intersect_packet(packet_rays, static_cast<int>(count), kInf, packet_hits, found);
+        for (std::size_t i = 0; i < count; ++i) {
+            paths[i].found = found[i];
         }
         for (std::size_t i = 0; i < count; ++i) {
             Path& path = paths[i];
