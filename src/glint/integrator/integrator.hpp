@@ -38,7 +38,8 @@ struct RayCounters {
 class Integrator {
   public:
     virtual ~Integrator() = default;
-    // Radiance arriving at the camera along `ray`. `samples` supplies this path's random numbers.
+    // Radiance arriving at the camera along `ray`, a camera ray: its direction is unit, as every
+    // camera's is (camera.hpp). `samples` supplies this path's random numbers.
     virtual Rgb radiance(const World& world, const Ray& ray, SampleStream& samples,
                          RayCounters& rays) const = 0;
     // The radiances along several camera rays, each path with its own stream: out[i] is exactly

@@ -48,11 +48,14 @@ Vec3 EnvironmentLight::from_map(const Vec3& v) const {
 }
 
 Rgb EnvironmentLight::escaped(const Vec3& dir) const {
+    // `dir` is unit (Light::escaped), as every caller's is: a camera ray's (camera.hpp), a BSDF
+    // sample's or a light sample's. Normalising it again cost a square root and a division on every
+    // path that escapes (see PathIntegrator::shade).
     if (!distribution_) {
-        const double t = 0.5 * (dir.y / length(dir) + 1);
+        const double t = 0.5 * (dir.y + 1);
         return (1 - t) * bottom_ + t * top_;
     }
-    const Point2 uv = direction_to_uv(to_map(normalize(dir)));
+    const Point2 uv = direction_to_uv(to_map(dir));
     const int x = std::min(image_.width - 1, static_cast<int>(uv.x * image_.width));
     const int y = std::min(image_.height - 1, static_cast<int>(uv.y * image_.height));
     const float* p = image_.pixel(x, y);
