@@ -110,10 +110,60 @@ struct SphereLanes {
     unsigned other;   // lanes of other shapes (set by test_group)
 };
 
-using namespace avx2;  // the lane arithmetic test_sphere_lanes spells out
+using namespace avx2;  // the lane arithmetic of the sphere tests below
 
-// Fills `lanes` in place (sphere, hit and other; t unless every sphere lane misses): returned by value,
-// the 224-byte record was copied twice a group (2.5 % of smallpt's instructions).
+// Four sphere–ray pairs at once, one in each lane: the ray origin's offset from the centre (oc), the
+// direction d with a = |d|² and 1/a, and the radius. sphere_hit_t in each lane, operation for operation
+// in the same order, for lanes that are `active` (all bits set); returns the lanes hit with t in
+// (0, t_limit) and their t in `t` (the other lanes' t are not to be read). Both tests below call it:
+// four spheres against one ray (the flat list) and one sphere against four rays (a packet's leaves).
+struct SphereRayLanes {
+    __m256d ocx, ocy, ocz, dx, dy, dz, a, inverse_a, radius;
+};
+__attribute__((target("avx2"), always_inline)) inline __m256d sphere_hit_lanes(const SphereRayLanes& in,
+                                                                               __m256d active,
+                                                                               __m256d t_limit, __m256d& t) {
+    // sphere_roots, line for line.
+    const __m256d h = dot3(in.dx, in.dy, in.dz, in.ocx, in.ocy, in.ocz);
+    const __m256d radius2 = mul(in.radius, in.radius);
+    const __m256d c = sub(dot3(in.ocx, in.ocy, in.ocz, in.ocx, in.ocy, in.ocz), radius2);
+    const __m256d h_over_a = mul(h, in.inverse_a);
+    const __m256d lx = sub(in.ocx, mul(in.dx, h_over_a));
+    const __m256d ly = sub(in.ocy, mul(in.dy, h_over_a));
+    const __m256d lz = sub(in.ocz, mul(in.dz, h_over_a));
+    const __m256d discriminant = mul(in.a, sub(radius2, dot3(lx, ly, lz, lx, ly, lz)));
+    const __m256d zero = _mm256_setzero_pd();
+    const __m256d not_missed = _mm256_cmp_pd(discriminant, zero, _CMP_NLT_UQ);  // !(Δ < 0)
+    // Most groups miss every sphere, or leave it behind from outside (h > 0, c ≥ 0: both roots negative):
+    // skip the square root and the divisions then, as the scalar code returns early.
+    const __m256d left_behind =
+        _mm256_and_pd(_mm256_cmp_pd(h, zero, _CMP_GT_OQ), _mm256_cmp_pd(c, zero, _CMP_GE_OQ));
+    const __m256d candidate = _mm256_andnot_pd(left_behind, _mm256_and_pd(not_missed, active));
+    if (_mm256_movemask_pd(candidate) == 0) {
+        t = zero;
+        return zero;
+    }
+    const __m256d sign_bit = _mm256_set1_pd(-0.0);
+    // copysign(sqrt(Δ), h), then q = −(h + that): sign flips are exact, as in the scalar code.
+    const __m256d root =
+        _mm256_or_pd(_mm256_andnot_pd(sign_bit, _mm256_sqrt_pd(discriminant)), _mm256_and_pd(sign_bit, h));
+    const __m256d q = _mm256_xor_pd(add(h, root), sign_bit);
+    const __m256d near_root = mul(q, in.inverse_a);
+    const __m256d far_root = _mm256_div_pd(c, q);
+    const __m256d swapped = _mm256_cmp_pd(near_root, far_root, _CMP_GT_OQ);  // if (t0 > t1) swap
+    const __m256d t0 = _mm256_blendv_pd(near_root, far_root, swapped);
+    const __m256d t1 = _mm256_blendv_pd(far_root, near_root, swapped);
+    // sphere_hit_t: t = t0 > 0 ? t0 : t1, hit when t > 0 && t < t_max. (A lane left behind has both
+    // roots ≤ 0, so leaving it out of `candidate` changes no answer.)
+    t = _mm256_blendv_pd(t1, t0, _mm256_cmp_pd(t0, zero, _CMP_GT_OQ));
+    __m256d hit = _mm256_and_pd(candidate, _mm256_cmp_pd(q, zero, _CMP_NEQ_UQ));  // !(q == 0)
+    hit = _mm256_and_pd(hit, _mm256_cmp_pd(t, zero, _CMP_GT_OQ));
+    return _mm256_and_pd(hit, _mm256_cmp_pd(t, t_limit, _CMP_LT_OQ));
+}
+
+// Four consecutive sphere records tested against a ray at once. Fills `lanes` in place (sphere, hit,
+// other and t): returned by value, the 224-byte record was copied twice a
+// group (2.5 % of smallpt's instructions).
 __attribute__((target("avx2"))) inline void test_sphere_lanes(const double* records, const Ray& ray,
                                                               double inverse_a, double t_limit,
                                                               SphereLanes& lanes) {
@@ -131,98 +181,44 @@ __attribute__((target("avx2"))) inline void test_sphere_lanes(const double* reco
     const __m256d cy = _mm256_permute2f128_pd(y0r0y1r1, y2r2y3r3, 0x20);
     const __m256d radius = _mm256_permute2f128_pd(y0r0y1r1, y2r2y3r3, 0x31);
 
-    const __m256d dx = _mm256_set1_pd(ray.direction.x);
-    const __m256d dy = _mm256_set1_pd(ray.direction.y);
-    const __m256d dz = _mm256_set1_pd(ray.direction.z);
-    // sphere_roots, line for line.
-    const __m256d ocx = sub(_mm256_set1_pd(ray.origin.x), cx);
-    const __m256d ocy = sub(_mm256_set1_pd(ray.origin.y), cy);
-    const __m256d ocz = sub(_mm256_set1_pd(ray.origin.z), cz);
-    const __m256d a = _mm256_set1_pd(dot(ray.direction, ray.direction));
-    const __m256d h = dot3(dx, dy, dz, ocx, ocy, ocz);
-    const __m256d radius2 = mul(radius, radius);
-    const __m256d c = sub(dot3(ocx, ocy, ocz, ocx, ocy, ocz), radius2);
-    const __m256d inverse_a_lanes = _mm256_set1_pd(inverse_a);
-    const __m256d h_over_a = mul(h, inverse_a_lanes);
-    const __m256d lx = sub(ocx, mul(dx, h_over_a));
-    const __m256d ly = sub(ocy, mul(dy, h_over_a));
-    const __m256d lz = sub(ocz, mul(dz, h_over_a));
-    const __m256d discriminant = mul(a, sub(radius2, dot3(lx, ly, lz, lx, ly, lz)));
+    const SphereRayLanes in{sub(_mm256_set1_pd(ray.origin.x), cx),
+                            sub(_mm256_set1_pd(ray.origin.y), cy),
+                            sub(_mm256_set1_pd(ray.origin.z), cz),
+                            _mm256_set1_pd(ray.direction.x),
+                            _mm256_set1_pd(ray.direction.y),
+                            _mm256_set1_pd(ray.direction.z),
+                            _mm256_set1_pd(dot(ray.direction, ray.direction)),
+                            _mm256_set1_pd(inverse_a),
+                            radius};
     const __m256d is_sphere = _mm256_cmp_pd(radius, _mm256_setzero_pd(), _CMP_GT_OQ);
-    const __m256d not_missed = _mm256_cmp_pd(discriminant, _mm256_setzero_pd(), _CMP_NLT_UQ);  // !(Δ < 0)
     lanes.sphere = static_cast<unsigned>(_mm256_movemask_pd(is_sphere));
-    lanes.hit = 0;
     lanes.other = 0;
-    // Most groups miss every sphere, or leave it behind from outside (h > 0, c ≥ 0: both roots negative):
-    // skip the square root and the divisions then, as the scalar code returns early.
-    const __m256d left_behind = _mm256_and_pd(_mm256_cmp_pd(h, _mm256_setzero_pd(), _CMP_GT_OQ),
-                                              _mm256_cmp_pd(c, _mm256_setzero_pd(), _CMP_GE_OQ));
-    if (_mm256_movemask_pd(_mm256_andnot_pd(left_behind, _mm256_and_pd(not_missed, is_sphere))) == 0) {
-        return;
-    }
-    const __m256d sign_bit = _mm256_set1_pd(-0.0);
-    // copysign(sqrt(Δ), h), then q = −(h + that): sign flips are exact, as in the scalar code.
-    const __m256d root =
-        _mm256_or_pd(_mm256_andnot_pd(sign_bit, _mm256_sqrt_pd(discriminant)), _mm256_and_pd(sign_bit, h));
-    const __m256d q = _mm256_xor_pd(add(h, root), sign_bit);
-    const __m256d near_root = mul(q, inverse_a_lanes);
-    const __m256d far_root = _mm256_div_pd(c, q);
-    const __m256d swapped = _mm256_cmp_pd(near_root, far_root, _CMP_GT_OQ);  // if (t0 > t1) swap
-    const __m256d t0 = _mm256_blendv_pd(near_root, far_root, swapped);
-    const __m256d t1 = _mm256_blendv_pd(far_root, near_root, swapped);
-    // sphere_hit_t: t = t0 > 0 ? t0 : t1, hit when t > 0 && t < t_max.
-    const __m256d t = _mm256_blendv_pd(t1, t0, _mm256_cmp_pd(t0, _mm256_setzero_pd(), _CMP_GT_OQ));
-    __m256d hit = _mm256_and_pd(not_missed, _mm256_cmp_pd(q, _mm256_setzero_pd(), _CMP_NEQ_UQ));  // !(q == 0)
-    hit = _mm256_and_pd(hit, _mm256_cmp_pd(t, _mm256_setzero_pd(), _CMP_GT_OQ));
-    hit = _mm256_and_pd(hit, _mm256_cmp_pd(t, _mm256_set1_pd(t_limit), _CMP_LT_OQ));
+    __m256d t;
+    lanes.hit = static_cast<unsigned>(
+        _mm256_movemask_pd(sphere_hit_lanes(in, is_sphere, _mm256_set1_pd(t_limit), t)));
     _mm256_store_pd(lanes.t, t);
-    lanes.hit = static_cast<unsigned>(_mm256_movemask_pd(_mm256_and_pd(hit, is_sphere)));
 }
 
-// Four rays of a packet (field by field, lane k ray k) tested against one sphere at once: sphere_hit_t
-// with t_max = ∞ in each lane, operation for operation in the same order as test_sphere_lanes (so each
-// lane's t is the very double the scalar function computes). Returns the lanes hit (all bits set) and
-// their t in `t`.
+// A packet's four rays (field by field, lane k ray k) against one sphere at once, with t_max = ∞ in
+// each lane: each lane's t is the very double the scalar function computes. Returns the lanes among
+// `active` that are hit (all bits set), and their t in `t`.
 struct PacketRayLanes {
     __m256d ox, oy, oz, dx, dy, dz, a, inverse_a;
 };
 __attribute__((target("avx2"))) inline __m256d test_sphere_rays(const double* record,
-                                                                const PacketRayLanes& rays, __m256d& t) {
+                                                                const PacketRayLanes& rays, __m256d active,
+                                                                __m256d& t) {
     // The record: centre x, y, z and radius.
-    const __m256d ocx = sub(rays.ox, _mm256_set1_pd(record[0]));
-    const __m256d ocy = sub(rays.oy, _mm256_set1_pd(record[1]));
-    const __m256d ocz = sub(rays.oz, _mm256_set1_pd(record[2]));
-    const __m256d radius = _mm256_set1_pd(record[3]);
-    const __m256d h = dot3(rays.dx, rays.dy, rays.dz, ocx, ocy, ocz);
-    const __m256d radius2 = mul(radius, radius);
-    const __m256d c = sub(dot3(ocx, ocy, ocz, ocx, ocy, ocz), radius2);
-    const __m256d h_over_a = mul(h, rays.inverse_a);
-    const __m256d lx = sub(ocx, mul(rays.dx, h_over_a));
-    const __m256d ly = sub(ocy, mul(rays.dy, h_over_a));
-    const __m256d lz = sub(ocz, mul(rays.dz, h_over_a));
-    const __m256d discriminant = mul(rays.a, sub(radius2, dot3(lx, ly, lz, lx, ly, lz)));
-    const __m256d zero = _mm256_setzero_pd();
-    const __m256d not_missed = _mm256_cmp_pd(discriminant, zero, _CMP_NLT_UQ);  // !(Δ < 0)
-    const __m256d left_behind =
-        _mm256_and_pd(_mm256_cmp_pd(h, zero, _CMP_GT_OQ), _mm256_cmp_pd(c, zero, _CMP_GE_OQ));
-    const __m256d candidate = _mm256_andnot_pd(left_behind, not_missed);
-    t = zero;
-    if (_mm256_movemask_pd(candidate) == 0) {
-        return zero;
-    }
-    const __m256d sign_bit = _mm256_set1_pd(-0.0);
-    const __m256d root =
-        _mm256_or_pd(_mm256_andnot_pd(sign_bit, _mm256_sqrt_pd(discriminant)), _mm256_and_pd(sign_bit, h));
-    const __m256d q = _mm256_xor_pd(add(h, root), sign_bit);
-    const __m256d near_root = mul(q, rays.inverse_a);
-    const __m256d far_root = _mm256_div_pd(c, q);
-    const __m256d swapped = _mm256_cmp_pd(near_root, far_root, _CMP_GT_OQ);
-    const __m256d t0 = _mm256_blendv_pd(near_root, far_root, swapped);
-    const __m256d t1 = _mm256_blendv_pd(far_root, near_root, swapped);
-    t = _mm256_blendv_pd(t1, t0, _mm256_cmp_pd(t0, zero, _CMP_GT_OQ));
-    __m256d hit = _mm256_and_pd(candidate, _mm256_cmp_pd(q, zero, _CMP_NEQ_UQ));
-    hit = _mm256_and_pd(hit, _mm256_cmp_pd(t, zero, _CMP_GT_OQ));
-    return _mm256_and_pd(hit, _mm256_cmp_pd(t, _mm256_set1_pd(kInf), _CMP_LT_OQ));
+    const SphereRayLanes in{sub(rays.ox, _mm256_set1_pd(record[0])),
+                            sub(rays.oy, _mm256_set1_pd(record[1])),
+                            sub(rays.oz, _mm256_set1_pd(record[2])),
+                            rays.dx,
+                            rays.dy,
+                            rays.dz,
+                            rays.a,
+                            rays.inverse_a,
+                            _mm256_set1_pd(record[3])};
+    return sphere_hit_lanes(in, active, _mm256_set1_pd(kInf), t);
 }
 
 // A packet's rays field by field, four to a register (lanes beyond the packet's rays hold zeros and are
@@ -253,7 +249,7 @@ __attribute__((target("avx2"))) inline unsigned test_leaf_against_group(const do
     unsigned closer_lanes = 0;
     for (std::uint32_t i = 0; i < count; ++i) {
         __m256d t;
-        const __m256d hit = _mm256_and_pd(in_leaf, test_sphere_rays(records + 4 * (first + i), lanes, t));
+        const __m256d hit = test_sphere_rays(records + 4 * (first + i), lanes, in_leaf, t);
         if (_mm256_movemask_pd(hit) == 0) {
             continue;
         }
