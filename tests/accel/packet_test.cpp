@@ -185,6 +185,7 @@ TEST(Packet, RaysBeyondFloatsRangeLargePacketsAndTheScalarTraversal) {
     const auto shapes = test::random_spheres(800, 4);
     const auto ptrs = pointers(shapes);
     const BvhAccelerator bvh(ptrs);
+    EXPECT_EQ(bvh.traces_packets(), WideBvh::uses_avx2());  // a tree of spheres alone
     std::mt19937_64 rng(12);
     // A ray from beyond float's range among ordinary ones: the packet is traced ray by ray.
     std::vector<Ray> packet = camera_like(rng, {0, 0, -20}, {0, 0, 1}, 0.3, 8);
@@ -197,6 +198,7 @@ TEST(Packet, RaysBeyondFloatsRangeLargePacketsAndTheScalarTraversal) {
     EXPECT_EQ(expect_packet_gives_each_rays_hit(bvh, {}), 0);
     // Without AVX2 (forced), the rays go one at a time.
     WideBvh::force_scalar_traversal(true);
+    EXPECT_FALSE(bvh.traces_packets());
     EXPECT_GT(expect_packet_gives_each_rays_hit(bvh, camera_like(rng, {0, 0, -20}, {0, 0, 1}, 0.3, 16)), 0);
     WideBvh::force_scalar_traversal(false);
 }
@@ -207,6 +209,7 @@ TEST(Packet, OtherScenesAndAcceleratorsGiveEachRaysHit) {
     std::mt19937_64 rng(6);
     // Packets from all around towards `target`.
     const auto check = [&](const Accelerator& accel, const Vec3& target) {
+        EXPECT_FALSE(accel.traces_packets());  // so the path tracer gathers no bounces for them
         int hits = 0;
         for (int p = 0; p < 50; ++p) {
             const Vec3 eye = random_in_box(rng, {-14, -14, -14}, {14, 14, 14});

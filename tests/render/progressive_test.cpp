@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "glint/bvh/wide_bvh.hpp"
 #include "glint/render/render.hpp"
 #include "glint/scene/scene.hpp"
 #include "glint/scene/scene_desc.hpp"
@@ -364,7 +365,8 @@ TEST(ProgressiveRender, SamplesTakenTogetherAreEachRenderSamplesBits) {
 }
 
 // A tree of spheres through a thin lens, where BvhAccelerator traces the camera rays of radiances as
-// one packet: each path still gets radiance()'s bits, twin spheres (ties) included.
+// one packet, and then their first bounces as another: each path still gets radiance()'s bits, twin
+// spheres (ties) included.
 TEST(ProgressiveRender, APacketOfCameraRaysGivesEachPathItsOwnBits) {
     std::string text =
         "render: {width: 4, height: 4, samples: 16, integrator: path, max_depth: 6}\n"
@@ -386,6 +388,7 @@ TEST(ProgressiveRender, APacketOfCameraRaysGivesEachPathItsOwnBits) {
         "  - {type: sphere, center: [0, -1000, 0], radius: 1000, material: {type: matte, albedo: 0.5}}\n"
         "background: [0.6, 0.7, 0.9]\n";
     const Scene scene = test::scene_from_text(text);
+    EXPECT_EQ(scene.world->traces_packets(), WideBvh::uses_avx2());  // packets wherever the CPU has AVX2
     for (const auto& [x, y] : {std::pair{1u, 2u}, std::pair{2u, 1u}, std::pair{3u, 3u}}) {
         std::vector<Ray> camera_rays;
         std::vector<SampleStream> streams;

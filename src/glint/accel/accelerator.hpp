@@ -27,6 +27,9 @@ class Accelerator {
             found[k] = intersect(*rays[k], t_max, *hits[k]);
         }
     }
+    // Whether intersect_packet traces its rays together rather than one after the other: only then is
+    // it worth a caller's while to gather rays it would otherwise trace as they come.
+    virtual bool traces_packets() const { return false; }
     // Any hit with t in (0, t_max).
     virtual bool occluded(const Ray& ray, double t_max) const = 0;
     virtual Bounds3 bounds() const = 0;

@@ -677,10 +677,18 @@ __attribute__((noinline)) bool BvhAccelerator::intersect_one_at_a_time(const Ray
     return intersect_with<false>(ray, t_max, hit);
 }
 
+bool BvhAccelerator::traces_packets() const {
+#ifdef GLINT_BVH_HAVE_AVX2_PATH
+    return packet_traversal_ && WideBvh::uses_avx2();
+#else
+    return false;
+#endif
+}
+
 void BvhAccelerator::intersect_packet(const Ray* const* rays, int n, double t_max, Hit* const* hits,
                                       bool* found) const {
 #ifdef GLINT_BVH_HAVE_AVX2_PATH
-    if (packet_traversal_ && WideBvh::uses_avx2()) {
+    if (traces_packets()) {
         for (int first = 0; first < n; first += WideBvh::kMaxPacket) {
             const int count = std::min(n - first, WideBvh::kMaxPacket);
             intersect_packet_avx2(rays + first, count, t_max, hits + first, found + first);

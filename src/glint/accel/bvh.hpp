@@ -30,6 +30,7 @@ class BvhAccelerator final : public Accelerator {
     // two spheres at the same t is traced again alone.
     void intersect_packet(const Ray* const* rays, int n, double t_max, Hit* const* hits,
                           bool* found) const override;
+    bool traces_packets() const override;
     Bounds3 bounds() const override { return bounds_; }
     // The box of the bounded shapes alone (bounds() is infinite as soon as there is a plane).
     const Bounds3& bounded_bounds() const { return bounded_bounds_; }

@@ -67,18 +67,17 @@ struct PathIntegrator::Path {
     // This bounce's hit and the last vertex (facing the way the path came): two records that trade
     // places each bounce, since copying a 112-byte Hit, and a facing copy of it, cost ~45 instructions
     // a vertex (2 % of the Cornell box).
-    // Only the current record starts cleared (radiances' packet of camera rays fills it as it is):
-    // trace() clears each record it fills, and the last one is read only after a bounce (for MIS, when
-    // that bounce was not specular), when it is a record filled there. Clearing both here, and the
-    // current one again before the packet, cost RTIOW's final scene 1.6 % of its time (bench/ab.py:
-    // 0.984 without). A union, so that `last` starts as plain storage, not as a Hit{} to clear.
+    // Both start as plain storage (a union, not a Hit{} to clear): each trace clears the record it fills
+    // (trace(), trace_together()), and the last one is read only after a bounce (for MIS, when that
+    // bounce was not specular), when it is a record filled there. Clearing them here as well cost
+    // RTIOW's final scene 1.6 % of its time.
     union Record {
         Record() {}
         Hit hit;
     };
     Record records[2];
     Hit* last = &records[0].hit;
-    Hit* current = &(records[1].hit = Hit{});
+    Hit* current = &records[1].hit;
 };
 
 // Both inlined into radiance's and radiances' loops: one loop, as before the two were split, with no
@@ -187,6 +186,23 @@ __attribute__((always_inline)) inline bool PathIntegrator::shade(const World& wo
     return true;
 }
 
+void PathIntegrator::trace_together(const World& world, std::span<Path* const> paths) const {
+    assert(paths.size() <= kPathsTogether);
+    // Zeroed, since GCC cannot see that intersect_packet reads only the first paths.size() entries.
+    const Ray* rays[kPathsTogether] = {};
+    Hit* hits[kPathsTogether] = {};
+    bool found[kPathsTogether];
+    for (std::size_t k = 0; k < paths.size(); ++k) {
+        *paths[k]->current = Hit{};
+        rays[k] = &paths[k]->ray;
+        hits[k] = paths[k]->current;
+    }
+    world.intersect_packet(rays, static_cast<int>(paths.size()), kInf, hits, found);
+    for (std::size_t k = 0; k < paths.size(); ++k) {
+        paths[k]->found = found[k];
+    }
+}
+
 Rgb PathIntegrator::radiance(const World& world, const Ray& camera_ray, SampleStream& samples,
                              RayCounters& rays) const {
     ++rays.camera;
@@ -201,34 +217,40 @@ void PathIntegrator::radiances(const World& world, std::span<const Ray> camera_r
                                std::span<SampleStream> streams, RayCounters& rays, std::span<Rgb> out) const {
     assert(streams.size() == camera_rays.size() && out.size() == camera_rays.size());
     // Paths a few at a time, on the stack (the render loop hands at most 16).
-    constexpr std::size_t kTogether = 16;
-    for (std::size_t start = 0; start < camera_rays.size(); start += kTogether) {
-        const std::size_t count = std::min(kTogether, camera_rays.size() - start);
-        FixedVector<Path, kTogether> paths;
+    for (std::size_t start = 0; start < camera_rays.size(); start += kPathsTogether) {
+        const std::size_t count = std::min(kPathsTogether, camera_rays.size() - start);
+        FixedVector<Path, kPathsTogether> paths;
+        Path* traced[kPathsTogether];  // the paths whose current ray has been traced, to go on with
         for (std::size_t i = 0; i < count; ++i) {
             ++rays.camera;
-            paths.emplace_back(camera_rays[start + i], streams[start + i]);
+            traced[i] = &paths.emplace_back(camera_rays[start + i], streams[start + i]);
         }
         // The camera rays together: they leave one pixel (or a few neighbours) in much the same direction, so
         // an accelerator may trace them as one packet (BvhAccelerator does for trees of spheres).
-        const Ray* packet_rays[kTogether];
-        Hit* packet_hits[kTogether];
-        bool found[kTogether];
-        for (std::size_t i = 0; i < count; ++i) {
-            Path& path = paths[i];
-            packet_rays[i] = &path.ray;
-            packet_hits[i] = path.current;
-        }
-        world.intersect_packet(packet_rays, static_cast<int>(count), kInf, packet_hits, found);
-        for (std::size_t i = 0; i < count; ++i) {
-            paths[i].found = found[i];
-        }
-        for (std::size_t i = 0; i < count; ++i) {
-            Path& path = paths[i];
-            while (shade(world, path, rays)) {
-                trace(world, path);
+        std::span<Path*> going_on(traced, count);
+        trace_together(world, going_on);
+        if (world.traces_packets()) {
+            // Their first bounces together too: they leave the points that one pixel's camera rays
+            // found, so they start together, and part only on the way (RTIOW's final scene: 0.957 of the
+            // time, bench/ab.py). The later bounces part at once, and gain nothing from it: their
+            // packets, every path's bounce in step with the others', were no faster. Nor was this one
+            // with an accelerator that traces rays one at a time (the Cornell box's flat list: 1.028).
+            std::size_t bouncing = 0;
+            for (Path* path : going_on) {
+                if (shade(world, *path, rays)) {
+                    going_on[bouncing++] = path;
+                }
             }
-            out[start + i] = path.radiance;
+            going_on = going_on.first(bouncing);
+            trace_together(world, going_on);
+        }
+        for (Path* path : going_on) {
+            while (shade(world, *path, rays)) {
+                trace(world, *path);
+            }
+        }
+        for (std::size_t i = 0; i < count; ++i) {
+            out[start + i] = paths[i].radiance;
         }
     }
 }

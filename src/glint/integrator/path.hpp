@@ -22,11 +22,13 @@ class PathIntegrator final : public Integrator {
     explicit PathIntegrator(int max_depth, bool learn_light_visibility = true)
         : max_depth_(max_depth), learn_light_visibility_(learn_light_visibility) {}
     Rgb radiance(const World& world, const Ray& ray, SampleStream& samples, RayCounters& rays) const override;
-    // All the camera rays first, one after the other, then each path on from its first hit. Rays of one
-    // pixel, or of neighbouring pixels, take nearly the same way through the scene's BVH, so that the later
-    // ones find the branches of that way predicted and their nodes in cache, and their latencies overlap; the
-    // paths' later bounces go every way, and interleaving those (two paths in lockstep) made the Cornell
-    // boxes slower. RTIOW's final scene renders in 0.945 of the time (bench/ab.py; docs/benchmarks.md).
+    // All the camera rays first, handed to the accelerator together, then each path on from its first
+    // hit. Rays of one pixel, or of neighbouring pixels, take nearly the same way through the scene's
+    // BVH: traced one after the other, the later ones find the branches of that way predicted and their
+    // nodes in cache (RTIOW's final scene in 0.945 of the time); an accelerator that traces packets
+    // walks the tree once for them all. With such an accelerator the paths' first bounces go together
+    // too (path.cpp says why); their later bounces go every way, and interleaving those (paths in
+    // lockstep) made no scene faster. Each path gets radiance()'s bits (docs/benchmarks.md).
     void radiances(const World& world, std::span<const Ray> camera_rays, std::span<SampleStream> streams,
                    RayCounters& rays, std::span<Rgb> out) const override;
     // A copy that samples the sphere lights with what LightVisibility learns of this view; nullptr
@@ -39,8 +41,13 @@ class PathIntegrator final : public Integrator {
   private:
     // One path's state from bounce to bounce (path.cpp).
     struct Path;
+    // radiances() follows paths this many at a time (the render loop hands at most 16).
+    static constexpr std::size_t kPathsTogether = 16;
     // The nearest hit of the path's ray, into its current Hit.
     void trace(const World& world, Path& path) const;
+    // The same for up to kPathsTogether paths, their rays handed to the accelerator together
+    // (World::intersect_packet): each path gets the hit trace() would give it.
+    void trace_together(const World& world, std::span<Path* const> paths) const;
     // What the path's current hit adds to its radiance, and its next ray: false when the path ends.
     bool shade(const World& world, Path& path, RayCounters& rays) const;
     // Light::sample and Light::pdf of world.lights[index], with what was learnt of it.

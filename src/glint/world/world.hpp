@@ -36,6 +36,7 @@ struct World {
     void intersect_packet(const Ray* const* rays, int n, double t_max, Hit* const* hits, bool* found) const {
         accelerator->intersect_packet(rays, n, t_max, hits, found);
     }
+    bool traces_packets() const { return accelerator->traces_packets(); }
     bool occluded(const Ray& ray, double t_max) const { return accelerator->occluded(ray, t_max); }
     const Material& material(const Hit& hit) const { return *materials[shape_materials[hit.primitive]]; }
     // Radiance seen along a ray that leaves the world in direction `dir`.
