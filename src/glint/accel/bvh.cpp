@@ -95,10 +95,8 @@ inline bool ray_may_meet(const Bounds3& box, const Ray& ray, const Vec3& inv, do
 constexpr std::uint32_t kFewestSpheresForFour = 3;
 
 #ifdef GLINT_BVH_HAVE_AVX2_PATH
-// Four consecutive sphere records tested against a ray at once: sphere_hit_t (geometry/sphere.hpp) in
-// each lane, operation for operation in the same order (no FMA: the build has -ffp-contract=off and
-// no FMA intrinsic is used outside the wide BVH's node test; sqrt and division are correctly rounded in
-// both), so each lane's t is the very double the scalar function computes.
+// What test_group finds for a group of four entries of a list against one ray (sphere and rectangle
+// lanes tested at once, the other shapes left to their own tests).
 struct SphereLanes {
     alignas(32) double t[4];
     // A rectangle lane's hit point and (a, b), as Rectangle::solve finds them: read only for rectangle
@@ -113,10 +111,13 @@ struct SphereLanes {
 using namespace avx2;  // the lane arithmetic of the sphere tests below
 
 // Four sphere–ray pairs at once, one in each lane: the ray origin's offset from the centre (oc), the
-// direction d with a = |d|² and 1/a, and the radius. sphere_hit_t in each lane, operation for operation
-// in the same order, for lanes that are `active` (all bits set); returns the lanes hit with t in
-// (0, t_limit) and their t in `t` (the other lanes' t are not to be read). Both tests below call it:
-// four spheres against one ray (the flat list) and one sphere against four rays (a packet's leaves).
+// direction d with a = |d|² and 1/a, and the radius. sphere_hit_t (geometry/sphere.hpp) in each lane,
+// operation for operation in the same order, for lanes that are `active` (all bits set): no FMA (the
+// build has -ffp-contract=off and no FMA intrinsic is used outside the wide BVH's node test), and sqrt
+// and division are correctly rounded in both, so each lane's t is the very double the scalar function
+// computes. Returns the lanes hit with t in (0, t_limit) and their t in `t` (the other lanes' t are not
+// to be read). Both tests below call it: four spheres against one ray (the flat list) and one sphere
+// against four rays (a packet's leaves).
 struct SphereRayLanes {
     __m256d ocx, ocy, ocz, dx, dy, dz, a, inverse_a, radius;
 };
@@ -162,8 +163,8 @@ __attribute__((target("avx2"), always_inline)) inline __m256d sphere_hit_lanes(c
 }
 
 // Four consecutive sphere records tested against a ray at once. Fills `lanes` in place (sphere, hit,
-// other and t): returned by value, the 224-byte record was copied twice a
-// group (2.5 % of smallpt's instructions).
+// other and t): returned by value, the 224-byte record was copied twice a group (2.5 % of smallpt's
+// instructions).
 __attribute__((target("avx2"))) inline void test_sphere_lanes(const double* records, const Ray& ray,
                                                               double inverse_a, double t_limit,
                                                               SphereLanes& lanes) {

@@ -231,7 +231,7 @@ void PathIntegrator::radiances(const World& world, std::span<const Ray> camera_r
         trace_together(world, going_on);
         if (world.traces_packets()) {
             // Their first bounces together too: they leave the points that one pixel's camera rays
-            // found, so they start together, and part only on the way (RTIOW's final scene: 0.957 of the
+            // found, so they start together, and part only on the way (RTIOW's final scene: 0.956 of the
             // time, bench/ab.py). The later bounces part at once, and gain nothing from it: their
             // packets, every path's bounce in step with the others', were no faster. Nor was this one
             // with an accelerator that traces rays one at a time (the Cornell box's flat list: 1.028).
