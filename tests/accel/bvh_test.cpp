@@ -181,6 +181,21 @@ TEST(Bvh, SpheresFourAtATimeGiveTheOneAtATimeBits) {
     Hit hit;
     ASSERT_TRUE(flat.intersect(Ray{{0.1, 0.2, 0}, {0, 0, 1}}, kInf, hit));
     EXPECT_EQ(hit.primitive, 0u);
+
+    // A tie across groups of four: a farther sphere first, then five copies of a nearer one. Entry 4
+    // (the first lane of the second group) ties with entries 1 to 3 of the first, and the first of
+    // them in list order, entry 1, is the one hit; entry 0's lane holds entry 4 then.
+    std::vector<std::unique_ptr<Shape>> behind_and_copies;
+    behind_and_copies.push_back(std::make_unique<Sphere>(Vec3{0, 0, 9}, 1.0));
+    for (int i = 0; i < 5; ++i) {
+        behind_and_copies.push_back(std::make_unique<Sphere>(Vec3{0, 0, 5}, 1.0));
+    }
+    const BvhAccelerator tied(pointers(behind_and_copies));
+    ASSERT_EQ(tied.flat_count(), 6u);
+    ASSERT_TRUE(tied.intersect(Ray{{0.1, 0.2, 0}, {0, 0, 1}}, kInf, hit));
+    EXPECT_EQ(hit.primitive, 1u);
+    ASSERT_TRUE(tied.intersect(Ray{{0.1, 0.2, 20}, {0, 0, -1}}, kInf, hit));
+    EXPECT_EQ(hit.primitive, 0u);
 }
 
 TEST(Bvh, PlanesAreKeptOutsideTheTreeAndStillHit) {

@@ -1,6 +1,7 @@
 #include "glint/accel/bvh.hpp"
 
 #include <algorithm>
+#include <cassert>
 #include <chrono>
 #include <cstring>
 #include <limits>
@@ -162,13 +163,10 @@ __attribute__((target("avx2"), always_inline)) inline __m256d sphere_hit_lanes(c
     return _mm256_and_pd(hit, _mm256_cmp_pd(t, t_limit, _CMP_LT_OQ));
 }
 
-// Four consecutive sphere records tested against a ray at once. Fills `lanes` in place (sphere, hit,
-// other and t): returned by value, the 224-byte record was copied twice a group (2.5 % of smallpt's
-// instructions).
-__attribute__((target("avx2"))) inline void test_sphere_lanes(const double* records, const Ray& ray,
-                                                              double inverse_a, double t_limit,
-                                                              SphereLanes& lanes) {
-    // Four records (cx, cy, cz, r) in rows; transposed into one register per field.
+// Four consecutive sphere records (cx, cy, cz, r in rows) against a ray, laid out for sphere_hit_lanes
+// (transposed into one register per field); `is_sphere` gets the lanes whose record is a sphere.
+__attribute__((target("avx2"), always_inline)) inline SphereRayLanes sphere_records_against_ray(
+    const double* records, const Ray& ray, double inverse_a, __m256d& is_sphere) {
     const __m256d r0 = _mm256_loadu_pd(records);
     const __m256d r1 = _mm256_loadu_pd(records + 4);
     const __m256d r2 = _mm256_loadu_pd(records + 8);
@@ -181,23 +179,104 @@ __attribute__((target("avx2"))) inline void test_sphere_lanes(const double* reco
     const __m256d cz = _mm256_permute2f128_pd(x0z0x1z1, x2z2x3z3, 0x31);
     const __m256d cy = _mm256_permute2f128_pd(y0r0y1r1, y2r2y3r3, 0x20);
     const __m256d radius = _mm256_permute2f128_pd(y0r0y1r1, y2r2y3r3, 0x31);
+    is_sphere = _mm256_cmp_pd(radius, _mm256_setzero_pd(), _CMP_GT_OQ);
+    return {sub(_mm256_set1_pd(ray.origin.x), cx),
+            sub(_mm256_set1_pd(ray.origin.y), cy),
+            sub(_mm256_set1_pd(ray.origin.z), cz),
+            _mm256_set1_pd(ray.direction.x),
+            _mm256_set1_pd(ray.direction.y),
+            _mm256_set1_pd(ray.direction.z),
+            _mm256_set1_pd(dot(ray.direction, ray.direction)),
+            _mm256_set1_pd(inverse_a),
+            radius};
+}
 
-    const SphereRayLanes in{sub(_mm256_set1_pd(ray.origin.x), cx),
-                            sub(_mm256_set1_pd(ray.origin.y), cy),
-                            sub(_mm256_set1_pd(ray.origin.z), cz),
-                            _mm256_set1_pd(ray.direction.x),
-                            _mm256_set1_pd(ray.direction.y),
-                            _mm256_set1_pd(ray.direction.z),
-                            _mm256_set1_pd(dot(ray.direction, ray.direction)),
-                            _mm256_set1_pd(inverse_a),
-                            radius};
-    const __m256d is_sphere = _mm256_cmp_pd(radius, _mm256_setzero_pd(), _CMP_GT_OQ);
+// Four consecutive sphere records tested against a ray at once. Fills `lanes` in place (sphere, hit,
+// other and t): returned by value, the 224-byte record was copied twice a group (2.5 % of smallpt's
+// instructions).
+__attribute__((target("avx2"))) inline void test_sphere_lanes(const double* records, const Ray& ray,
+                                                              double inverse_a, double t_limit,
+                                                              SphereLanes& lanes) {
+    __m256d is_sphere;
+    const SphereRayLanes in = sphere_records_against_ray(records, ray, inverse_a, is_sphere);
     lanes.sphere = static_cast<unsigned>(_mm256_movemask_pd(is_sphere));
     lanes.other = 0;
     __m256d t;
     lanes.hit = static_cast<unsigned>(
         _mm256_movemask_pd(sphere_hit_lanes(in, is_sphere, _mm256_set1_pd(t_limit), t)));
     _mm256_store_pd(lanes.t, t);
+}
+
+// The lanes (all bits set) of a group of four entries from i that lie before `end`.
+__attribute__((target("avx2"), always_inline)) inline __m256d lanes_before(std::uint32_t i,
+                                                                           std::uint32_t end) {
+    const auto left = static_cast<std::int64_t>(end - i);
+    return _mm256_castsi256_pd(_mm256_cmpgt_epi64(_mm256_set1_epi64x(left), _mm256_setr_epi64x(0, 1, 2, 3)));
+}
+
+// A list of spheres alone (smallpt's room), entries [first, end): the nearest hit with t in
+// (0, t_limit), the first in list order among equal t's, as the one-at-a-time loop finds it. Every
+// group is tested before any answer is looked at, each lane keeping its nearest: the groups' square
+// roots and divisions then overlap, where the walk of each group's lanes against the t_limit of the
+// moment (test_range) made every group wait for the last one's branches, mispredicted as often as a
+// ray's hits are unpredictable. A lane keeps the earlier of equal t's (a later group replaces it only
+// when nearer), and the lanes' ties go to the lowest entry. Returns whether any sphere is hit, with its
+// entry in `nearest` and its t in `nearest_t`.
+__attribute__((target("avx2"))) inline bool nearest_sphere_of_list(const double* records, std::uint32_t first,
+                                                                   std::uint32_t end, const Ray& ray,
+                                                                   double inverse_a, double t_limit,
+                                                                   std::uint32_t& nearest,
+                                                                   double& nearest_t) {
+    const __m256d limit = _mm256_set1_pd(t_limit);
+    __m256d lane_t = limit;  // each lane's nearest t so far (t_limit: none)
+    __m256i lane_entry = _mm256_setzero_si256();
+    for (std::uint32_t i = first; i < end; i += 4) {
+        __m256d is_sphere;
+        const SphereRayLanes in = sphere_records_against_ray(records + 4 * i, ray, inverse_a, is_sphere);
+        __m256d t;
+        const __m256d hit = sphere_hit_lanes(in, _mm256_and_pd(is_sphere, lanes_before(i, end)), limit, t);
+        const __m256d nearer = _mm256_and_pd(hit, _mm256_cmp_pd(t, lane_t, _CMP_LT_OQ));
+        lane_t = _mm256_blendv_pd(lane_t, t, nearer);
+        lane_entry = _mm256_castpd_si256(_mm256_blendv_pd(
+            _mm256_castsi256_pd(lane_entry),
+            _mm256_castsi256_pd(_mm256_add_epi64(_mm256_set1_epi64x(i), _mm256_setr_epi64x(0, 1, 2, 3))),
+            nearer));
+    }
+    // The lanes' minimum (no lane holds a NaN: only hits' t's, which compared less, were taken).
+    const __m256d halves = _mm256_min_pd(lane_t, _mm256_permute2f128_pd(lane_t, lane_t, 0x01));
+    const __m256d smallest = _mm256_min_pd(halves, _mm256_permute_pd(halves, 0b0101));
+    const auto at_smallest = static_cast<unsigned>(_mm256_movemask_pd(_mm256_and_pd(
+        _mm256_cmp_pd(lane_t, smallest, _CMP_EQ_OQ), _mm256_cmp_pd(lane_t, limit, _CMP_LT_OQ))));
+    if (at_smallest == 0) {
+        return false;
+    }
+    alignas(32) std::int64_t entries[4];
+    _mm256_store_si256(reinterpret_cast<__m256i*>(entries), lane_entry);
+    auto lane = static_cast<unsigned>(__builtin_ctz(at_smallest));
+    for (unsigned tied = at_smallest & (at_smallest - 1); tied != 0; tied &= tied - 1) {
+        const auto other = static_cast<unsigned>(__builtin_ctz(tied));
+        lane = entries[other] < entries[lane] ? other : lane;
+    }
+    nearest = static_cast<std::uint32_t>(entries[lane]);
+    nearest_t = _mm256_cvtsd_f64(smallest);
+    return true;
+}
+
+// Whether any sphere of entries [first, end) of a list of spheres alone is hit with t in (0, t_limit):
+// every group tested before the answer is looked at, as nearest_sphere_of_list does.
+__attribute__((target("avx2"))) inline bool any_sphere_of_list(const double* records, std::uint32_t first,
+                                                               std::uint32_t end, const Ray& ray,
+                                                               double inverse_a, double t_limit) {
+    const __m256d limit = _mm256_set1_pd(t_limit);
+    __m256d any_hit = _mm256_setzero_pd();
+    for (std::uint32_t i = first; i < end; i += 4) {
+        __m256d is_sphere;
+        const SphereRayLanes in = sphere_records_against_ray(records + 4 * i, ray, inverse_a, is_sphere);
+        __m256d t;
+        any_hit = _mm256_or_pd(
+            any_hit, sphere_hit_lanes(in, _mm256_and_pd(is_sphere, lanes_before(i, end)), limit, t));
+    }
+    return _mm256_movemask_pd(any_hit) != 0;
 }
 
 // A packet's four rays (field by field, lane k ray k) against one sphere at once, with t_max = ∞ in
@@ -347,27 +426,18 @@ __attribute__((target("avx2"))) inline unsigned culling_box_lanes(const Block& b
     return static_cast<unsigned>(_mm256_movemask_pd(_mm256_cmp_pd(t0, t1, _CMP_LE_OQ)));
 }
 
-// The group of (up to) four entries of `list` from i, in a range that ends before `end`: lanes past
-// the end are dropped. In a list with rectangles (whose groups start at multiples of four), rectangle
-// lanes are tested too and reported with the spheres', and other lanes only when the ray may meet their
-// culling box (the list's own shapes' tests then skip that box). Fills `lanes` in place.
-// kSpheresOnly: the list holds only spheres (ShapeList::spheres_only()), decided once a ray rather than
-// once a group (reading the flag in here cost the Cornell box 0.5 % of its instructions; the choice
-// once a ray costs it 0.3 %).
-template <bool kSpheresOnly, class ShapeList>
+// The group of (up to) four entries of a list with rectangles (the flat list, whose groups start at
+// multiples of four) from i, in a range that ends before `end`: lanes past the end are dropped.
+// Sphere and rectangle lanes are tested and reported together, and other lanes only when the ray may
+// meet their culling box (the list's own shapes' tests then skip that box). Fills `lanes` in place.
+// (A list of spheres alone is tested whole instead: nearest_sphere_of_list, any_sphere_of_list.)
+template <class ShapeList>
 __attribute__((target("avx2"))) inline void test_group(const ShapeList& list, std::uint32_t i,
                                                        std::uint32_t end, const Ray& ray,
                                                        const Vec3& inv_direction, double inverse_a,
                                                        double t_limit, SphereLanes& lanes) {
+    assert(list.with_rectangles);
     const unsigned in_range = (1u << std::min<std::uint32_t>(end - i, 4)) - 1;
-    if (kSpheresOnly || !list.with_rectangles) {
-        // No block to read for a list of spheres (smallpt's room: 5 % of its instructions).
-        test_sphere_lanes(reinterpret_cast<const double*>(list.spheres.data() + i), ray, inverse_a, t_limit,
-                          lanes);
-        lanes.hit &= in_range;
-        lanes.other = ~lanes.sphere & in_range;
-        return;
-    }
     const auto& block = list.rectangles[i / 4];
     if ((block.spheres & in_range) != 0) {
         test_sphere_lanes(reinterpret_cast<const double*>(list.spheres.data() + i), ray, inverse_a, t_limit,
@@ -393,7 +463,8 @@ __attribute__((target("avx2"))) inline void test_group(const ShapeList& list, st
 #endif
 
 // f(std::true_type{}) for a list of spheres only, else f(std::false_type{}): the choice made once a
-// ray, for test_group's kSpheresOnly.
+// ray, between testing the list whole (nearest_sphere_of_list) and group by group (test_group).
+// (Reading the flag once a group cost the Cornell box 0.5 % of its instructions; once a ray, 0.3 %.)
 template <class ShapeList, class F>
 inline bool with_spheres_only(const ShapeList& list, F&& f) {
     return list.spheres_only() ? f(std::true_type{}) : f(std::false_type{});
@@ -514,35 +585,45 @@ bool BvhAccelerator::intersect_with(const Ray& ray, double t_max, Hit& hit) cons
 #ifdef GLINT_BVH_HAVE_AVX2_PATH
         if (decltype(four_at_a_time)::value && count >= kFewestSpheresForFour) {
             const std::uint32_t end = first + count;
-            SphereLanes lanes;
-            for (std::uint32_t i = first; i < end; i += 4) {
-                test_group<decltype(spheres_only)::value>(list, i, end, ray, inv_direction, inverse_a,
-                                                          t_limit, lanes);
-                // The lanes' t's were found against the t_limit of the group's start; walking them in
-                // order against the t_limit of the moment gives what the one-at-a-time loop gives.
-                // (Boxes are culled against that t_limit too: a box culled against it is culled against
-                // the lower one of the moment, and one that passes may cost its shape's own test, which
-                // then misses. The same results, not always the same tests.)
-                for (unsigned todo = lanes.hit | lanes.other; todo != 0; todo &= todo - 1) {
-                    const auto lane = static_cast<unsigned>(__builtin_ctz(todo));
-                    if ((lanes.other >> lane) & 1) {
-                        found |= test_other(list, i + lane, t_limit, list.with_rectangles);
-                    } else if (lanes.t[lane] < t_limit) {
-                        take_sphere(list, i + lane, lanes.t[lane], t_limit);
-                        nearest_is_rectangle = !decltype(spheres_only)::value && list.with_rectangles &&
-                                               ((list.rectangles[i / 4].rectangles >> lane) & 1) != 0;
-                        if (nearest_is_rectangle) {
-                            for (int axis = 0; axis < 3; ++axis) {
-                                nearest_rectangle_point[axis] = lanes.point[axis][lane];
+            if constexpr (decltype(spheres_only)::value) {
+                std::uint32_t nearest = 0;
+                double t = 0;
+                if (!nearest_sphere_of_list(reinterpret_cast<const double*>(list.spheres.data()), first, end,
+                                            ray, inverse_a, t_limit, nearest, t)) {
+                    return false;
+                }
+                take_sphere(list, nearest, t, t_limit);
+                return true;
+            } else {
+                SphereLanes lanes;
+                for (std::uint32_t i = first; i < end; i += 4) {
+                    test_group(list, i, end, ray, inv_direction, inverse_a, t_limit, lanes);
+                    // The lanes' t's were found against the t_limit of the group's start; walking them in
+                    // order against the t_limit of the moment gives what the one-at-a-time loop gives.
+                    // (Boxes are culled against that t_limit too: a box culled against it is culled against
+                    // the lower one of the moment, and one that passes may cost its shape's own test, which
+                    // then misses. The same results, not always the same tests.)
+                    for (unsigned todo = lanes.hit | lanes.other; todo != 0; todo &= todo - 1) {
+                        const auto lane = static_cast<unsigned>(__builtin_ctz(todo));
+                        if ((lanes.other >> lane) & 1) {
+                            found |= test_other(list, i + lane, t_limit, list.with_rectangles);
+                        } else if (lanes.t[lane] < t_limit) {
+                            take_sphere(list, i + lane, lanes.t[lane], t_limit);
+                            nearest_is_rectangle = list.with_rectangles &&
+                                                   ((list.rectangles[i / 4].rectangles >> lane) & 1) != 0;
+                            if (nearest_is_rectangle) {
+                                for (int axis = 0; axis < 3; ++axis) {
+                                    nearest_rectangle_point[axis] = lanes.point[axis][lane];
+                                }
+                                nearest_rectangle_ab[0] = lanes.ab[0][lane];
+                                nearest_rectangle_ab[1] = lanes.ab[1][lane];
                             }
-                            nearest_rectangle_ab[0] = lanes.ab[0][lane];
-                            nearest_rectangle_ab[1] = lanes.ab[1][lane];
+                            found = true;
                         }
-                        found = true;
                     }
                 }
+                return found;
             }
-            return found;
         }
 #endif
         for (std::uint32_t i = first; i < first + count; ++i) {
@@ -602,21 +683,25 @@ bool BvhAccelerator::occluded_with(const Ray& ray, double t_max) const {
 #ifdef GLINT_BVH_HAVE_AVX2_PATH
         if (decltype(four_at_a_time)::value && count >= kFewestSpheresForFour) {
             const std::uint32_t end = first + count;
-            SphereLanes lanes;
-            for (std::uint32_t i = first; i < end; i += 4) {
-                test_group<decltype(spheres_only)::value>(list, i, end, ray, inv_direction, inverse_a,
-                                                          t_limit, lanes);
-                if (lanes.hit != 0) {
-                    return true;
-                }
-                for (unsigned others = lanes.other; others != 0; others &= others - 1) {
-                    if (other_occludes(list, i + static_cast<unsigned>(__builtin_ctz(others)), t_limit,
-                                       list.with_rectangles)) {
+            if constexpr (decltype(spheres_only)::value) {
+                return any_sphere_of_list(reinterpret_cast<const double*>(list.spheres.data()), first, end,
+                                          ray, inverse_a, t_limit);
+            } else {
+                SphereLanes lanes;
+                for (std::uint32_t i = first; i < end; i += 4) {
+                    test_group(list, i, end, ray, inv_direction, inverse_a, t_limit, lanes);
+                    if (lanes.hit != 0) {
                         return true;
                     }
+                    for (unsigned others = lanes.other; others != 0; others &= others - 1) {
+                        if (other_occludes(list, i + static_cast<unsigned>(__builtin_ctz(others)), t_limit,
+                                           list.with_rectangles)) {
+                            return true;
+                        }
+                    }
                 }
+                return false;
             }
-            return false;
         }
 #endif
         for (std::uint32_t i = first; i < first + count; ++i) {
