@@ -486,6 +486,42 @@ TEST(Bvh, CoordinatesBeyondFloatRangeOrTinyStillHit) {
     }
 }
 
+// A shape tested by its own intersect (a box) and a rectangle on its face meet a ray at the very same t;
+// the one first in the list is hit, whether the rectangles go four at a time (AVX2: the box is tested
+// in its place among their lanes) or one at a time. Two more rectangles, out of the ray's way, make the
+// list four at a time.
+TEST(Bvh, AShapeTiedWithARectangleGoesByListOrder) {
+    const Ray ray{{0.7, 1.3, 10}, {0, 0, -1}};
+    for (const bool box_first : {true, false}) {
+        std::vector<std::unique_ptr<Shape>> shapes;
+        auto box = std::make_unique<Box>(Vec3{0, 0, 0}, Vec3{2, 2, 2});
+        // The box's top face, z = 2, with the normal (0, 0, 1) exactly: both find t = 8 to the bit.
+        auto face = std::make_unique<Rectangle>(Vec3{0, 0, 2}, Vec3{2, 0, 0}, Vec3{0, 2, 0});
+        if (box_first) {
+            shapes.push_back(std::move(box));
+            shapes.push_back(std::move(face));
+        } else {
+            shapes.push_back(std::move(face));
+            shapes.push_back(std::move(box));
+        }
+        shapes.push_back(std::make_unique<Rectangle>(Vec3{100, 0, 0}, Vec3{2, 0, 0}, Vec3{0, 2, 0}));
+        shapes.push_back(std::make_unique<Rectangle>(Vec3{0, 100, 0}, Vec3{2, 0, 0}, Vec3{0, 2, 0}));
+        const auto ptrs = pointers(shapes);
+        const BvhAccelerator flat(ptrs, ptrs.size());
+        ASSERT_EQ(flat.flat_count(), ptrs.size());
+        for (const bool scalar : {true, false}) {
+            WideBvh::force_scalar_traversal(scalar);
+            Hit hit;
+            ASSERT_TRUE(flat.intersect(ray, kInf, hit)) << box_first << scalar;
+            EXPECT_EQ(hit.t, 8.0);
+            EXPECT_EQ(hit.primitive, 0u) << "box first: " << box_first << ", scalar: " << scalar;
+            EXPECT_TRUE(flat.occluded(ray, 9.0));
+            EXPECT_FALSE(flat.occluded(ray, 8.0));
+        }
+        WideBvh::force_scalar_traversal(false);
+    }
+}
+
 // The flat list tests its rectangles four at a time with AVX2 too (Rectangle::solve lane by lane); the
 // answers must be the one-at-a-time loop's bits. A closed Cornell-like room (walls sharing their edges,
 // so rays meet exact ties and hit edges and corners), a light just below the ceiling, rotated boxes
