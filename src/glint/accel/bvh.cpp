@@ -104,9 +104,8 @@ struct SphereLanes {
     // lanes that are hit, so that the nearest one's Hit is filled without solving again.
     alignas(32) double point[3][4];
     alignas(32) double ab[2][4];
-    unsigned sphere;  // lanes whose record is a sphere (radius > 0)
-    unsigned hit;     // sphere (and rectangle) lanes hit with t in (0, t_limit)
-    unsigned other;   // lanes of other shapes (set by test_group)
+    unsigned hit;    // sphere (and rectangle) lanes hit with t in (0, t_limit)
+    unsigned other;  // lanes of other shapes whose culling box the ray may meet
 };
 
 using namespace avx2;  // the lane arithmetic of the sphere tests below
@@ -191,16 +190,14 @@ __attribute__((target("avx2"), always_inline)) inline SphereRayLanes sphere_reco
             radius};
 }
 
-// Four consecutive sphere records tested against a ray at once. Fills `lanes` in place (sphere, hit,
-// other and t): returned by value, the 224-byte record was copied twice a group (2.5 % of smallpt's
+// Four consecutive sphere records tested against a ray at once, for test_group. Fills `lanes`' hit and
+// t in place: returned by value, the 224-byte record was copied twice a group (2.5 % of smallpt's
 // instructions).
 __attribute__((target("avx2"))) inline void test_sphere_lanes(const double* records, const Ray& ray,
                                                               double inverse_a, double t_limit,
                                                               SphereLanes& lanes) {
     __m256d is_sphere;
     const SphereRayLanes in = sphere_records_against_ray(records, ray, inverse_a, is_sphere);
-    lanes.sphere = static_cast<unsigned>(_mm256_movemask_pd(is_sphere));
-    lanes.other = 0;
     __m256d t;
     lanes.hit = static_cast<unsigned>(
         _mm256_movemask_pd(sphere_hit_lanes(in, is_sphere, _mm256_set1_pd(t_limit), t)));
@@ -446,7 +443,7 @@ __attribute__((target("avx2"))) inline void test_group(const ShapeList& list, st
         // t's of 0 in lanes that are not hit; the rectangles' points are left unset, not zeroed (that
         // alone cost more than solving the nearest rectangle again).
         _mm256_store_pd(lanes.t, _mm256_setzero_pd());
-        lanes.sphere = lanes.hit = lanes.other = 0;
+        lanes.hit = 0;
     }
     if ((block.rectangles & in_range) != 0) {
         lanes.hit |=
@@ -606,11 +603,10 @@ bool BvhAccelerator::intersect_with(const Ray& ray, double t_max, Hit& hit) cons
                     for (unsigned todo = lanes.hit | lanes.other; todo != 0; todo &= todo - 1) {
                         const auto lane = static_cast<unsigned>(__builtin_ctz(todo));
                         if ((lanes.other >> lane) & 1) {
-                            found |= test_other(list, i + lane, t_limit, list.with_rectangles);
+                            found |= test_other(list, i + lane, t_limit, true);
                         } else if (lanes.t[lane] < t_limit) {
                             take_sphere(list, i + lane, lanes.t[lane], t_limit);
-                            nearest_is_rectangle = list.with_rectangles &&
-                                                   ((list.rectangles[i / 4].rectangles >> lane) & 1) != 0;
+                            nearest_is_rectangle = ((list.rectangles[i / 4].rectangles >> lane) & 1) != 0;
                             if (nearest_is_rectangle) {
                                 for (int axis = 0; axis < 3; ++axis) {
                                     nearest_rectangle_point[axis] = lanes.point[axis][lane];
@@ -695,7 +691,7 @@ bool BvhAccelerator::occluded_with(const Ray& ray, double t_max) const {
                     }
                     for (unsigned others = lanes.other; others != 0; others &= others - 1) {
                         if (other_occludes(list, i + static_cast<unsigned>(__builtin_ctz(others)), t_limit,
-                                           list.with_rectangles)) {
+                                           true)) {
                             return true;
                         }
                     }
