@@ -341,6 +341,47 @@ TEST(Bvh, RaysLeavingTheGeneratedBlobsSurfaceGiveTheBruteForceAnswers) {
     expect_brute_force_answers_from_the_surface(blob());
 }
 
+// A scene of one mesh skips the flat list and goes straight to the mesh's own tree. It must give what
+// the flat list gives: the same answers, to the bit, as the mesh beside a sphere that no ray meets
+// (which keeps the flat list), with the scene index set. The records start with a stale index, as a
+// path's reused Hit does.
+TEST(Bvh, ALoneMeshGivesTheFlatListsAnswers) {
+    const Mesh& mesh = blob();
+    const Sphere far_away({1000, 1000, 1000}, 1);
+    const Shape* lone[] = {&mesh};
+    const Shape* listed[] = {&mesh, &far_away};
+    const BvhAccelerator alone(lone), flat(listed);
+    ASSERT_EQ(alone.flat_count(), 1u);
+    ASSERT_EQ(flat.flat_count(), 2u);
+    const auto surface = test::surface_rays(
+        mesh.bounds(), 200, 29, [&](const Ray& ray, Hit& hit) { return mesh.intersect(ray, kInf, hit); });
+    std::vector<Ray> rays = rays_into(mesh.bounds(), 300, 5);
+    rays.insert(rays.end(), surface.bounce.begin(), surface.bounce.end());
+    int hits = 0;
+    for (const Ray& ray : rays) {
+        Hit a, b;
+        a.primitive = b.primitive = 7;
+        const bool found = flat.intersect(ray, kInf, a);
+        ASSERT_EQ(alone.intersect(ray, kInf, b), found);
+        EXPECT_EQ(alone.occluded(ray, kInf), found);
+        if (found) {
+            ++hits;
+            EXPECT_EQ(a.primitive, 0u);
+            expect_identical_hits(a, b, true);
+            EXPECT_FALSE(alone.occluded(ray, a.t * (1 - 1e-9)));
+        }
+    }
+    EXPECT_GT(hits, 200);
+    int occluded = 0;
+    for (const Ray& shadow : surface.shadow) {
+        const bool blocked = flat.occluded(shadow, 1.0);
+        EXPECT_EQ(alone.occluded(shadow, 1.0), blocked);
+        occluded += blocked ? 1 : 0;
+    }
+    EXPECT_GT(occluded, 20);
+    EXPECT_GT(static_cast<int>(surface.shadow.size()) - occluded, 20);
+}
+
 TEST(Bvh, GeneratedBlobHitsDoNotDependOnTheScale) {
     expect_hits_independent_of_the_scale(blob_data());
 }

@@ -8,6 +8,7 @@
 #include <type_traits>
 
 #include "glint/core/avx2_lanes.hpp"
+#include "glint/geometry/mesh.hpp"
 #include "glint/geometry/rectangle.hpp"
 #include "glint/geometry/sphere.hpp"
 
@@ -515,6 +516,14 @@ BvhAccelerator::BvhAccelerator(std::span<const Shape* const> shapes, std::size_t
     // inline, ties seen) and nothing outside it. What they save is the single ray's branches, which
     // the AVX2 traversal pays.
     packet_traversal_ = direct_.size() == 0 && leaves_.size() > 0 && leaves_.spheres_only();
+    // A lone mesh: its tree's root node culls what the flat list's box test would, and the list's set-up
+    // (four divisions a ray, the box test in double, the lambdas' state) was a tenth of the bunny's
+    // diffuse rays' time (bench/accel: 0.86 of Embree's speed before, 0.89-0.90 after).
+    if (direct_.size() == 1 && leaves_.size() == 0 &&
+        dynamic_cast<const Mesh*>(direct_.shapes[0]) != nullptr) {
+        lone_mesh_ = direct_.shapes[0];
+        lone_mesh_index_ = direct_.scene_index[0];
+    }
     build_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
@@ -745,6 +754,13 @@ __attribute__((target("avx2,fma"), flatten)) bool BvhAccelerator::occluded_avx2(
 // flat list's spheres and rectangles four at a time when it has enough of them. Without: one at a time,
 // compiled for the baseline CPU. The same bits either way.
 bool BvhAccelerator::intersect(const Ray& ray, double t_max, Hit& hit) const {
+    if (lone_mesh_ != nullptr) {
+        if (!lone_mesh_->intersect(ray, t_max, hit)) {
+            return false;
+        }
+        hit.primitive = lone_mesh_index_;
+        return true;
+    }
 #ifdef GLINT_BVH_HAVE_AVX2_PATH
     if (WideBvh::uses_avx2()) {
         return flat_list_four_at_a_time(direct_) ? intersect_avx2<true>(ray, t_max, hit)
@@ -844,6 +860,9 @@ __attribute__((target("avx2,fma"), flatten)) void BvhAccelerator::intersect_pack
 #endif
 
 bool BvhAccelerator::occluded(const Ray& ray, double t_max) const {
+    if (lone_mesh_ != nullptr) {
+        return lone_mesh_->occluded(ray, t_max);
+    }
 #ifdef GLINT_BVH_HAVE_AVX2_PATH
     if (WideBvh::uses_avx2()) {
         return flat_list_four_at_a_time(direct_) ? occluded_avx2<true>(ray, t_max)

@@ -6,7 +6,8 @@
 namespace glint {
 
 // The scene's BVH: an 8-wide BVH (bvh/wide_bvh.hpp) whose leaves are the scene's bounded shapes,
-// called virtually (a mesh is one such leaf, with its own BVH inside: a two-level hierarchy).
+// called virtually (a mesh is one such leaf, with its own BVH inside: a two-level hierarchy; a scene
+// of one mesh alone goes straight to the mesh's BVH).
 // Unbounded shapes (planes) have no box to sort, so they are kept aside and tested for every ray; so are
 // all the bounded shapes of a scene of at most kFlatMaxShapes (smallpt's nine spheres), for which a
 // traversal costs more than the tests it would save. Either way the answers are the same
@@ -118,6 +119,12 @@ class BvhAccelerator final : public Accelerator {
     WideBvh bvh_;
     Bounds3 bounds_;
     Bounds3 bounded_bounds_;
+
+    // A scene of one mesh and nothing else: every ray goes straight to the mesh's own tree, without
+    // the flat list's set-up (its reciprocals, the mesh's culling box, which the tree's root node
+    // tests again). Null otherwise.
+    const Shape* lone_mesh_ = nullptr;
+    std::uint32_t lone_mesh_index_ = 0;  // its scene index
     double build_seconds_ = 0;
     bool packet_traversal_ = false;  // intersect_packet traces packets (see the constructor)
 };
