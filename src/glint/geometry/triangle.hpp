@@ -21,18 +21,35 @@ struct WatertightRay {
     Vec3 origin;
     int kx = 0, ky = 1, kz = 2;  // kz: the dominant axis of the direction; (kx, ky, kz) keeps winding
     double shear_x = 0, shear_y = 0, shear_z = 0;
+    double origin_x = 0, origin_y = 0, origin_z = 0;  // origin[kx], origin[ky], origin[kz]
 
+    // Without branches: a bounce ray's dominant axis and its sign are as unpredictable as its
+    // direction, and the branches of the choice (and of Vec3's operator[] with a variable index) were
+    // mispredicted for a good part of the bunny's diffuse rays.
     explicit WatertightRay(const Ray& ray) : origin(ray.origin) {
+        const double d[3] = {ray.direction.x, ray.direction.y, ray.direction.z};
+        const double o[3] = {ray.origin.x, ray.origin.y, ray.origin.z};
         const Vec3 a = abs(ray.direction);
-        kz = a.x > a.y ? (a.x > a.z ? 0 : 2) : (a.y > a.z ? 1 : 2);
-        kx = kz == 2 ? 0 : kz + 1;
-        ky = kx == 2 ? 0 : kx + 1;
-        if (ray.direction[kz] < 0) {
-            std::swap(kx, ky);  // keep the winding, so the sign of the determinant means the same side
-        }
-        shear_x = ray.direction[kx] / ray.direction[kz];
-        shear_y = ray.direction[ky] / ray.direction[kz];
-        shear_z = 1.0 / ray.direction[kz];
+        // kz = a.x > a.y ? (a.x > a.z ? 0 : 2) : (a.y > a.z ? 1 : 2), looked up from the three
+        // comparisons (bits 0, 1, 2: x > y, x > z, y > z; false for a NaN, as in the ternaries).
+        constexpr int kLargest[8] = {2, 2, 2, 0, 1, 2, 1, 0};
+        const int index =
+            static_cast<int>(a.x > a.y) | static_cast<int>(a.x > a.z) << 1 | static_cast<int>(a.y > a.z) << 2;
+        constexpr int kNext[3] = {1, 2, 0};
+        kz = kLargest[index];
+        kx = kNext[kz];
+        ky = kNext[kx];
+        // Along −kz, x and y trade places, to keep the winding (the sign of the determinant means the
+        // same side).
+        const int swap = (kx ^ ky) & -static_cast<int>(d[kz] < 0);
+        kx ^= swap;
+        ky ^= swap;
+        shear_x = d[kx] / d[kz];
+        shear_y = d[ky] / d[kz];
+        shear_z = 1.0 / d[kz];
+        origin_x = o[kx];
+        origin_y = o[ky];
+        origin_z = o[kz];
     }
 };
 

@@ -67,9 +67,9 @@ __attribute__((target("avx2"), always_inline)) inline int intersect_block_avx2(c
                                                                                const TriangleBlock& block,
                                                                                double t_max,
                                                                                TriangleHit& out) {
-    const __m256d ox = _mm256_set1_pd(ray.origin[ray.kx]);
-    const __m256d oy = _mm256_set1_pd(ray.origin[ray.ky]);
-    const __m256d oz = _mm256_set1_pd(ray.origin[ray.kz]);
+    const __m256d ox = _mm256_set1_pd(ray.origin_x);
+    const __m256d oy = _mm256_set1_pd(ray.origin_y);
+    const __m256d oz = _mm256_set1_pd(ray.origin_z);
     const __m256d sx = _mm256_set1_pd(ray.shear_x);
     const __m256d sy = _mm256_set1_pd(ray.shear_y);
     const __m256d sz = _mm256_set1_pd(ray.shear_z);
