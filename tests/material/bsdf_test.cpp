@@ -109,6 +109,35 @@ TEST_P(ScatteringBsdf, SampleAgreesWithEvaluateAndPdf) {
     EXPECT_GT(non_delta, 1000);
 }
 
+// Each sample's weight, in closed form where the material has one (Lambert's ρ, a mirror's
+// reflectance, glass's (n1/n2)²), is its f · |cos θi| / pdf: the path tracer carries its throughput on
+// by the weight alone.
+void expect_weights_are_f_cos_over_pdf(const Material& material) {
+    const Hit hit = test_hit();
+    const Bsdf bsdf = material.bsdf(hit);
+    int samples = 0;
+    for (const double c : kViewCosines) {
+        const Vec3 wo = direction_at(hit, c, 1.3);
+        for (std::uint32_t i = 0; i < 500; ++i) {
+            const auto s = bsdf.sample(wo, test_point(7, i));
+            if (!s || !(s->pdf > 0)) {
+                continue;
+            }
+            ++samples;
+            const Rgb expected = s->f * (std::abs(dot(hit.shading_normal, s->wi)) / s->pdf);
+            const double tolerance = 1e-12 * expected.max_component();
+            EXPECT_NEAR(s->weight.r, expected.r, tolerance) << "cos θo = " << c << ", sample " << i;
+            EXPECT_NEAR(s->weight.g, expected.g, tolerance) << "cos θo = " << c << ", sample " << i;
+            EXPECT_NEAR(s->weight.b, expected.b, tolerance) << "cos θo = " << c << ", sample " << i;
+        }
+    }
+    EXPECT_GT(samples, 1000);
+}
+
+TEST_P(ScatteringBsdf, SampleWeightIsFCosOverPdf) {
+    expect_weights_are_f_cos_over_pdf(*GetParam().make());
+}
+
 TEST_P(ScatteringBsdf, IsReciprocal) {
     const auto material = GetParam().make();
     const Hit hit = test_hit();
@@ -296,6 +325,21 @@ TEST(DeltaLobes, EvaluateAndPdfAreZeroForEveryDeltaSample) {
             EXPECT_TRUE(bsdf.evaluate(wo, s->wi).is_black());
             EXPECT_EQ(bsdf.pdf(wo, s->wi), 0);
         }
+    }
+}
+
+TEST(DeltaLobes, SampleWeightIsFCosOverPdf) {
+    // Glass reflects and refracts (from inside, beyond the critical angle too); the plastic's coat
+    // and its diffuse base; a fuzzy metal sharp and fuzzy.
+    const Dielectric glass(1.5, Rgb());
+    const Mirror mirror(std::make_shared<ConstantTexture>(Rgb(0.8, 0.5, 0.2)));
+    const Metal smooth(constant(0.8), 0.01);
+    const FuzzyMetal sharp_fuzzy(constant(0.7), 0);
+    const FuzzyMetal fuzzy(constant(0.7), 0.4);
+    const Plastic plastic(constant(0.5), 1.5);
+    for (const Material* m :
+         std::initializer_list<const Material*>{&glass, &mirror, &smooth, &sharp_fuzzy, &fuzzy, &plastic}) {
+        expect_weights_are_f_cos_over_pdf(*m);
     }
 }
 

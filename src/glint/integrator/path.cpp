@@ -167,7 +167,7 @@ __attribute__((always_inline)) inline bool PathIntegrator::shade(const World& wo
     if (!s || s->pdf <= 0 || s->f.is_black()) {
         return false;
     }
-    throughput *= s->f * (std::abs(dot(hit.shading_normal, s->wi)) / s->pdf);
+    throughput *= s->weight;
     path.specular = s->delta;
     path.bsdf_pdf = s->pdf;
     std::swap(path.last, path.current);

@@ -72,7 +72,7 @@ Rgb WhittedIntegrator::radiance(const World& world, const Ray& camera_ray, Sampl
             // lobe otherwise: one sample with the path's own random numbers, weighted f·|cos|/pdf.
             const std::optional<BsdfSample> s = bsdf.sample(wo, samples.next_2d());
             if (s && s->delta && s->pdf > 0) {
-                follow(*s, s->f * (std::abs(dot(hit.shading_normal, s->wi)) / s->pdf));
+                follow(*s, s->weight);
             }
         }
         // Pushed in reverse, so that the first branch and all it leads to are traced first.

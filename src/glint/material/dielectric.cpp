@@ -39,7 +39,8 @@ std::optional<BsdfSample> Dielectric::sample(const MaterialPoint&, const Vec3& w
         }
     }
     if (u.x < reflectance) {
-        return BsdfSample{mirror_local(wo), Rgb(reflectance / c1), reflectance, true};
+        // Weight (R / cos) · cos / R = 1.
+        return BsdfSample{mirror_local(wo), Rgb(reflectance / c1), reflectance, true, Rgb(1.0)};
     }
     const Vec3 wi = normalize(*refracted);
     const double cos_i = std::abs(wi.z);
@@ -47,7 +48,7 @@ std::optional<BsdfSample> Dielectric::sample(const MaterialPoint&, const Vec3& w
         return std::nullopt;
     }
     const double transmittance = 1 - reflectance;
-    return BsdfSample{wi, Rgb(transmittance * sqr(n1 / n2) / cos_i), transmittance, true};
+    return BsdfSample{wi, Rgb(transmittance * sqr(n1 / n2) / cos_i), transmittance, true, Rgb(sqr(n1 / n2))};
 }
 
 std::unique_ptr<Material> Dielectric::create(Params& params, const BuildContext&) {

@@ -35,7 +35,7 @@ std::optional<BsdfSample> FuzzyMetal::sample(const MaterialPoint& point, const V
     if (!same_hemisphere(wo, scattered)) {
         return std::nullopt;  // perturbed below the surface (the book's front-face normal): absorbed
     }
-    return BsdfSample{scattered, point.specular / std::abs(scattered.z), 1.0, true};
+    return BsdfSample{scattered, point.specular / std::abs(scattered.z), 1.0, true, point.specular};
 }
 
 std::unique_ptr<Material> FuzzyMetal::create(Params& params, const BuildContext& context) {

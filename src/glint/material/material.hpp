@@ -38,11 +38,26 @@ class Params;
 struct BuildContext;
 class Bsdf;
 
+// A direction sampled from a BSDF, made by a material's sample() in its shading frame (z the shading
+// normal), where the sample's weight is computed.
 struct BsdfSample {
+    // The weight f · |cos θi| / pdf from the others (cos θi = wi.z: wi in the shading frame).
+    BsdfSample(const Vec3& direction, const Rgb& value, double density, bool is_delta)
+        : BsdfSample(direction, value, density, is_delta,
+                     density > 0 ? value * (std::abs(direction.z) / density) : Rgb{}) {}
+    // The weight in closed form, where the lobe has one: what f · |cos θi| / pdf comes to once its
+    // factors cancel (Lambert's ρ, a mirror's reflectance), without their rounding, and without the
+    // division on the way from one bounce to the next (Mitsuba's BSDF::sample returns it too).
+    BsdfSample(const Vec3& direction, const Rgb& value, double density, bool is_delta, const Rgb& path_weight)
+        : wi(direction), f(value), pdf(density), delta(is_delta), weight(path_weight) {}
+
     Vec3 wi;
     Rgb f;               // BSDF value for (wo, wi)
     double pdf = 0;      // solid-angle density of wi; for a delta lobe, the discrete probability
     bool delta = false;  // a mirror or refraction direction: f and pdf are Dirac weights
+    // f · |cos θi| / pdf: the factor by which the sample carries a path's throughput on (zero when
+    // pdf is not positive).
+    Rgb weight;
 };
 
 // What a material's textures give at one hit (Yocto/GL's material_point): the parameters of its BSDF

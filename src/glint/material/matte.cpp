@@ -17,7 +17,8 @@ std::optional<BsdfSample> Matte::sample(const MaterialPoint& point, const Vec3& 
     if (pdf <= 0) {
         return std::nullopt;
     }
-    return BsdfSample{flip_if_below(wi, wo.z), point.diffuse * kInvPi, pdf, false};
+    // f · cos θ / pdf = (ρ/π) · cos θ / (cos θ/π) = ρ.
+    return BsdfSample{flip_if_below(wi, wo.z), point.diffuse * kInvPi, pdf, false, point.diffuse};
 }
 
 double Matte::pdf(const MaterialPoint&, const Vec3& wo, const Vec3& wi) const {

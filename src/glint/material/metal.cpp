@@ -32,7 +32,8 @@ std::optional<BsdfSample> Metal::sample(const MaterialPoint& point, const Vec3& 
         return std::nullopt;
     }
     if (is_mirror()) {
-        return BsdfSample{mirror_local(wo), schlick(cos_o, point.specular) / cos_o, 1.0, true};
+        const Rgb reflectance = schlick(cos_o, point.specular);
+        return BsdfSample{mirror_local(wo), reflectance / cos_o, 1.0, true, reflectance};
     }
     const Vec3 wi = ggx_.sample_reflection(wo, u);
     const double density = pdf(point, wo, wi);

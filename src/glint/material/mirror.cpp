@@ -10,7 +10,7 @@ std::optional<BsdfSample> Mirror::sample(const MaterialPoint& point, const Vec3&
     if (cos_theta <= 0) {
         return std::nullopt;
     }
-    return BsdfSample{mirror_local(wo), point.specular / cos_theta, 1.0, true};
+    return BsdfSample{mirror_local(wo), point.specular / cos_theta, 1.0, true, point.specular};
 }
 
 std::unique_ptr<Material> Mirror::create(Params& params, const BuildContext& context) {

@@ -40,7 +40,8 @@ std::optional<BsdfSample> Plastic::sample(const MaterialPoint& point, const Vec3
     }
     const double p = coat_probability(point, wo);
     if (u.x < p) {
-        return BsdfSample{mirror_local(wo), Rgb(coat_reflectance(wo) / cos_o), p, true};
+        const double reflectance = coat_reflectance(wo);
+        return BsdfSample{mirror_local(wo), Rgb(reflectance / cos_o), p, true, Rgb(reflectance / p)};
     }
     const Point2 v{(u.x - p) / (1 - p), u.y};
     const Vec3 local = sample_cosine_hemisphere(v);
