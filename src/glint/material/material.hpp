@@ -14,7 +14,8 @@
 // shading normal, not turned towards wo, so cos θ = w.z, and w.z < 0 below the surface.
 //
 // A sample's path weight is f · |cos θi| / pdf with cos θi = dot(hit.shading_normal, wi) (absolute:
-// transmitted directions lie on the other side). For delta lobes (mirror, smooth glass, the coat of
+// transmitted directions lie on the other side); the sample carries it (BsdfSample::weight), in closed
+// form where the lobe has one. For delta lobes (mirror, smooth glass, the coat of
 // plastic) f and pdf are Dirac weights: f holds the 1/|cos θi| that the weight cancels and pdf the
 // discrete probability of choosing that lobe; evaluate() and pdf() return 0 for them, since no other
 // sampling strategy can find a delta direction.
