@@ -9,6 +9,7 @@
 #include "glint/core/hash.hpp"
 #include "glint/image/image_io.hpp"
 #include "glint/integrator/direct_lighting.hpp"
+#include "glint/integrator/path.hpp"
 #include "glint/light/area.hpp"
 #include "glint/scene/scene_set.hpp"
 #include "integrator/radiance_util.hpp"
@@ -399,6 +400,25 @@ lights: [{type: environment, radiance: 1}]
     EXPECT_NEAR(film.pixel(0, 0).r, std::exp(-1.0), 1e-6);
     EXPECT_NEAR(film.pixel(0, 0).g, 1.0, 1e-6);
     EXPECT_NEAR(film.pixel(0, 0).b, std::exp(-2.0), 1e-6);
+}
+
+// Next-event estimation's weight over the light's density is the power heuristic's weight divided by
+// it, also where the other density is zero or far apart, and where the squares overflow (no weight
+// then, as the power heuristic's NaN gives none).
+TEST(Mis, PowerHeuristicOverPdfIsThePowerHeuristicOverThePdf) {
+    for (const double a : {1e-100, 0.3, 1.0, 7.5, 1e100, 1e200}) {
+        for (const double b : {0.0, 1e-110, 0.3, 2.0, 1e110, 1e200}) {
+            const double expected = power_heuristic(a, b) / a;
+            const double got = power_heuristic_over_pdf(a, b);
+            if (std::isnan(expected)) {
+                EXPECT_FALSE(got > 0) << a << ", " << b << ": the sample must not count";
+            } else {
+                EXPECT_NEAR(got, expected, 1e-15 * expected + 1e-300) << a << ", " << b;
+            }
+        }
+    }
+    EXPECT_EQ(power_heuristic_over_pdf(2.0, 0.0), 0.5);  // no other strategy: the estimator's 1/pdf
+    EXPECT_EQ(power_heuristic_over_pdf(0.0, 0.0), 0.0);
 }
 
 }  // namespace

@@ -112,7 +112,7 @@ __attribute__((always_inline)) inline bool PathIntegrator::shade(const World& wo
         return false;
     }
     const Material& material = world.material(hit);
-    throughput *= segment_transmittance(material, hit, ray);
+    attenuate_along_segment(throughput, material, hit, ray);
     const Vec3 wo = -ray.direction;
 
     const Rgb emitted = material.emitted(hit, wo);
@@ -156,9 +156,11 @@ __attribute__((always_inline)) inline bool PathIntegrator::shade(const World& wo
         if (f.is_black() || cos_theta == 0) {
             continue;
         }
-        const double weight = ls->delta ? 1.0 : power_heuristic(ls->pdf, bsdf.pdf_local(wo_local, wi_local));
-        if (weight > 0 && !shadowed(world, at, *ls, rays)) {
-            radiance += throughput * f * ls->radiance * (cos_theta * weight / ls->pdf);
+        // The MIS weight over the light's density (the estimator's 1/pdf taken with it).
+        const double weight_over_pdf =
+            ls->delta ? 1 / ls->pdf : power_heuristic_over_pdf(ls->pdf, bsdf.pdf_local(wo_local, wi_local));
+        if (weight_over_pdf > 0 && !shadowed(world, at, *ls, rays)) {
+            radiance += throughput * f * ls->radiance * (cos_theta * weight_over_pdf);
         }
     }
 

@@ -68,4 +68,11 @@ inline double power_heuristic(double pdf_a, double pdf_b) {
     return a + b > 0 ? a / (a + b) : 0;
 }
 
+// power_heuristic(pdf_a, pdf_b) / pdf_a = pdf_a / (pdf_a² + pdf_b²), for an estimator that divides by
+// pdf_a anyway (next-event estimation): one division instead of two.
+inline double power_heuristic_over_pdf(double pdf_a, double pdf_b) {
+    const double sum = pdf_a * pdf_a + pdf_b * pdf_b;
+    return sum > 0 ? pdf_a / sum : 0;
+}
+
 }  // namespace glint

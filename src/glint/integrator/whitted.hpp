@@ -35,4 +35,13 @@ inline Rgb segment_transmittance(const Material& material, const Hit& hit, const
     return sigma.is_black() ? Rgb(1.0) : beer_transmittance(sigma, hit.t * length(ray.direction));
 }
 
+// throughput *= segment_transmittance(material, hit, ray), without multiplying by one for a segment
+// through air (nearly every vertex of a path).
+inline void attenuate_along_segment(Rgb& throughput, const Material& material, const Hit& hit,
+                                    const Ray& ray) {
+    if (dot(ray.direction, hit.normal) > 0) {
+        throughput *= segment_transmittance(material, hit, ray);
+    }
+}
+
 }  // namespace glint
