@@ -37,7 +37,8 @@ Rgb WhittedIntegrator::radiance(const World& world, const Ray& camera_ray, Sampl
         }
         const Material& material = world.material(hit);
         const Vec3 wo = normalize(-ray.direction);
-        const Rgb throughput = branch.throughput * segment_transmittance(material, hit, ray);
+        Rgb throughput = branch.throughput;
+        attenuate_along_segment(throughput, material, hit, ray);
         const Bsdf bsdf = material.bsdf(hit);  // the textures, looked up once for all that follows
         radiance +=
             throughput * (material.emitted(hit, wo) + direct_lighting(world, hit, bsdf, wo, samples, rays));
