@@ -50,6 +50,11 @@ class PathIntegrator final : public Integrator {
     void trace_together(const World& world, std::span<Path* const> paths) const;
     // What the path's current hit adds to its radiance, and its next ray: false when the path ends.
     bool shade(const World& world, Path& path, RayCounters& rays) const;
+    // shade()'s next-event estimation and next bounce, once the BSDF at the hit is made (a Bsdf, or a
+    // LambertBsdf for a material with a constant Lambert lobe).
+    template <class BsdfAtHit>
+    bool scatter(const World& world, Path& path, RayCounters& rays, const BsdfAtHit& bsdf,
+                 const Vec3& wo) const;
     // Light::sample and Light::pdf of world.lights[index], with what was learnt of it.
     std::optional<LightSample> light_sample_of(const World& world, std::size_t index, const Hit& at,
                                                Point2 u) const;

@@ -6,23 +6,22 @@
 
 namespace glint {
 
+Matte::Matte(std::shared_ptr<const Texture> albedo) : albedo_(std::move(albedo)) {
+    if (const auto* constant = dynamic_cast<const ConstantTexture*>(albedo_.get())) {
+        set_constant_lambert(constant->evaluate(Hit{}));
+    }
+}
+
 Rgb Matte::evaluate(const MaterialPoint& point, const Vec3& wo, const Vec3& wi) const {
-    return same_hemisphere(wo, wi) ? point.diffuse * kInvPi : Rgb{};
+    return lambert_evaluate(point.diffuse, wo, wi);
 }
 
 std::optional<BsdfSample> Matte::sample(const MaterialPoint& point, const Vec3& wo, Point2 u) const {
-    // Cosine-weighted about the normal on wo's side.
-    const Vec3 wi = sample_cosine_hemisphere(u);
-    const double pdf = wi.z * kInvPi;
-    if (pdf <= 0) {
-        return std::nullopt;
-    }
-    // f · cos θ / pdf = (ρ/π) · cos θ / (cos θ/π) = ρ.
-    return BsdfSample{flip_if_below(wi, wo.z), point.diffuse * kInvPi, pdf, false, point.diffuse};
+    return lambert_sample(point.diffuse, wo, u);
 }
 
 double Matte::pdf(const MaterialPoint&, const Vec3& wo, const Vec3& wi) const {
-    return same_hemisphere(wo, wi) ? std::abs(wi.z) * kInvPi : 0;
+    return lambert_pdf(wo, wi);
 }
 
 std::unique_ptr<Material> Matte::create(Params& params, const BuildContext& context) {

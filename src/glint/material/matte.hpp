@@ -11,7 +11,7 @@ namespace glint {
 // MaterialPoint::diffuse.
 class Matte final : public Material {
   public:
-    explicit Matte(std::shared_ptr<const Texture> albedo) : albedo_(std::move(albedo)) {}
+    explicit Matte(std::shared_ptr<const Texture> albedo);
     explicit Matte(const Rgb& albedo) : Matte(std::make_shared<ConstantTexture>(albedo)) {}
 
     static std::unique_ptr<Material> create(Params& params, const BuildContext& context);
