@@ -1,12 +1,13 @@
 // The path tracer shades a Matte of constant albedo through LambertBsdf, inline, and any other material
 // through its Bsdf's virtual lobes (PathIntegrator::scatter). The two must give the same image to the
 // bit: here the same albedo reaches the renderer once as a constant (the inline lobe) and once as a
-// texture that is not a ConstantTexture (the virtual one), in a closed room with an area light (next-event
-// estimation, its MIS weights, Russian roulette) and a point light.
+// texture that is not a ConstantTexture (the virtual one), inside a closed sphere with an area light
+// (next-event estimation, its MIS weights, Russian roulette) and a point light.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <memory>
+#include <utility>
 
 #include "glint/material/matte.hpp"
 #include "integrator/radiance_util.hpp"
@@ -42,13 +43,13 @@ Film render_inside_sphere(std::unique_ptr<Material> material) {
 
 TEST(InlineLambert, ThePathTracersImageIsTheBitsOfTheVirtualLobes) {
     const Rgb albedo(0.7, 0.45, 0.2);
-    const auto inline_lobe = std::make_unique<Matte>(albedo);
+    auto inline_lobe = std::make_unique<Matte>(albedo);
     ASSERT_NE(inline_lobe->constant_lambert(), nullptr);
-    const auto virtual_lobe = std::make_unique<Matte>(std::make_shared<UniformTexture>(albedo));
+    auto virtual_lobe = std::make_unique<Matte>(std::make_shared<UniformTexture>(albedo));
     ASSERT_EQ(virtual_lobe->constant_lambert(), nullptr);
 
-    const Film a = render_inside_sphere(std::make_unique<Matte>(albedo));
-    const Film b = render_inside_sphere(std::make_unique<Matte>(std::make_shared<UniformTexture>(albedo)));
+    const Film a = render_inside_sphere(std::move(inline_lobe));
+    const Film b = render_inside_sphere(std::move(virtual_lobe));
     double sum = 0;
     for (int y = 0; y < 12; ++y) {
         for (int x = 0; x < 16; ++x) {

@@ -3,7 +3,9 @@
 // turned every way, and a Material::constant_lambert() only where that lobe is the whole BSDF.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <memory>
 #include <utility>
 
@@ -46,7 +48,7 @@ TEST(LambertBsdf, GivesTheBitsOfMattesOwnBsdf) {
         const Point2 n = test_point(11, frame_index);
         const double z = 1 - 2 * n.x;
         const double r = std::sqrt(std::max(0.0, 1 - z * z));
-        Hit hit =
+        const Hit hit =
             testing::test_hit(normalize(Vec3{r * std::cos(2 * kPi * n.y), r * std::sin(2 * kPi * n.y), z}));
         const Bsdf bsdf = matte.bsdf(hit);
         const LambertBsdf lambert(Frame::from_normal(hit.shading_normal), *matte.constant_lambert());
