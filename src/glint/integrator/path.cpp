@@ -139,11 +139,12 @@ __attribute__((always_inline)) inline bool PathIntegrator::shade(const World& wo
 }
 
 // The rest of shade() once the BSDF is made: next-event estimation and the next bounce. BsdfAtHit is
-// Bsdf or LambertBsdf (the same interface in the shading frame).
+// Bsdf or LambertBsdf (the same interface in the shading frame). A call, not inlined into shade()'s
+// three copies: that is how it was measured (GCC had set aside an always_inline here, which came
+// after the first use).
 template <class BsdfAtHit>
-__attribute__((always_inline)) inline bool PathIntegrator::scatter(const World& world, Path& path,
-                                                                   RayCounters& rays, const BsdfAtHit& bsdf,
-                                                                   const Vec3& wo) const {
+__attribute__((noinline)) bool PathIntegrator::scatter(const World& world, Path& path, RayCounters& rays,
+                                                       const BsdfAtHit& bsdf, const Vec3& wo) const {
     Rgb& radiance = path.radiance;
     Rgb& throughput = path.throughput;
     SampleStream& samples = *path.samples;
