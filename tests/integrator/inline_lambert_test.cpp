@@ -5,27 +5,21 @@
 // (next-event estimation, its MIS weights, Russian roulette) and a point light.
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <memory>
 #include <utility>
 
 #include "glint/material/matte.hpp"
+#include "glint/texture/checker.hpp"
 #include "integrator/radiance_util.hpp"
 
 namespace glint {
 namespace {
 
-// A constant colour that the Matte cannot tell from any other texture.
-class UniformTexture final : public Texture {
-  public:
-    explicit UniformTexture(const Rgb& value) : value_(value) {}
-    Rgb evaluate(const Hit&) const override { return value_; }
-    double min_value() const override { return std::min({value_.r, value_.g, value_.b}); }
-    double max_value() const override { return value_.max_component(); }
-
-  private:
-    Rgb value_;
-};
+// A constant colour through a texture that is not a ConstantTexture: a checker of two equal squares.
+std::shared_ptr<const Texture> uniform_checker(const Rgb& value) {
+    const auto square = std::make_shared<ConstantTexture>(value);
+    return std::make_shared<CheckerTexture>(square, square, 1.0, CheckerTexture::Space::Solid);
+}
 
 Film render_inside_sphere(std::unique_ptr<Material> material) {
     Scene scene = test::scene_from_yaml(
@@ -45,7 +39,7 @@ TEST(InlineLambert, ThePathTracersImageIsTheBitsOfTheVirtualLobes) {
     const Rgb albedo(0.7, 0.45, 0.2);
     auto inline_lobe = std::make_unique<Matte>(albedo);
     ASSERT_NE(inline_lobe->constant_lambert(), nullptr);
-    auto virtual_lobe = std::make_unique<Matte>(std::make_shared<UniformTexture>(albedo));
+    auto virtual_lobe = std::make_unique<Matte>(uniform_checker(albedo));
     ASSERT_EQ(virtual_lobe->constant_lambert(), nullptr);
 
     const Film a = render_inside_sphere(std::move(inline_lobe));
