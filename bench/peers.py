@@ -172,11 +172,14 @@ class Renderer:
         return self.collect(self.launch(spp, seed, path), path)
 
 
-def glint(scene, size, threads):
+def glint(scene, size, threads, estimator=None):
+    """glint on a scene; estimator 'bsdf-only' switches the path tracer's light sampling off."""
+    extra = ['--set', 'render.integrator.sample_lights=false'] if estimator == 'bsdf-only' else []
+
     def command(spp, seed, path):
         return [GLINT, 'render', os.path.join(ROOT, scene), '--width', str(size[0]), '--height', str(size[1]),
-                '--spp', str(spp), '--seed', str(seed), '--threads', str(threads), '-o', path], None
-    return Renderer(f'glint {threads}t', threads, command, 'file')
+                '--spp', str(spp), '--seed', str(seed), '--threads', str(threads), '-o', path] + extra, None
+    return Renderer(f'glint {threads}t' + (f' {estimator}' if estimator else ''), threads, command, 'file')
 
 
 def smallpt(size, threads):
@@ -405,15 +408,16 @@ def glint_rays_per_second(err):
     return float(m[-1]) if m else None
 
 
-def measure_scene(key, cfg, runs, peer, glint_one, glint_all=None, bvh_peer=None, ref_peer=None):
-    """Everything for one scene: equal-spp times, RMSE ladders and fits, the convergence check."""
+def measure_scene(key, cfg, runs, peer, glint_one, glint_all=None, bvh_peer=None, ref_peer=None, ref_key=None):
+    """Everything for one scene: equal-spp times, RMSE ladders and fits, the convergence check. ref_key:
+    the scene whose reference to use (default: key's own)."""
     folder = os.path.join(OUT, key)
     os.makedirs(folder, exist_ok=True)
     size = cfg['size']
     log(f'\n== {key}: {peer.name} ({peer.threads} thread{"s" if peer.threads > 1 else ""}) vs {glint_one.name}'
         + (f' and {glint_all.name}' if glint_all else '') + (f'; {bvh_peer.name}' if bvh_peer else '')
         + f', {size[0]}x{size[1]}')
-    ref_mean, ref_var = reference(key, ref_peer or peer, cfg['ref'], size)
+    ref_mean, ref_var = reference(ref_key or key, ref_peer or peer, cfg['ref'], size)
     ref_level = float(np.mean(ref_mean))
     result = {'size': list(size), 'reference_spp': 2 * cfg['ref'], 'reference_mean': ref_level,
               'reference_rmse_relative': math.sqrt(float(np.mean(ref_var))) / ref_level, 'pairs': {}}
@@ -684,7 +688,7 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.split('\n')[0])
     parser.add_argument('--mode', choices=sorted(MODES), default=os.environ.get('BENCH_MODE', 'fast'))
     parser.add_argument('--runs', type=int, help='alternating runs at equal spp (default: 3 fast, 5 full)')
-    parser.add_argument('--only', nargs='*', choices=['smallpt', 'rtiow', 'cornell', 'overhead'],
+    parser.add_argument('--only', nargs='*', choices=['smallpt', 'smallpt-bsdf-only', 'rtiow', 'cornell', 'overhead'],
                         help='measure only these (default: all)')
     parser.add_argument('--glint', help='the glint binary to measure (default: build/release/glint), e.g. '
                         'an older build for a before/after comparison on the same peers and references')
@@ -695,7 +699,7 @@ def main():
     OUT = os.path.abspath(args.out) if args.out else OUT
     mode = MODES[args.mode]
     runs = args.runs or mode['runs']
-    only = set(args.only or ['smallpt', 'rtiow', 'cornell', 'overhead'])
+    only = set(args.only or ['smallpt', 'smallpt-bsdf-only', 'rtiow', 'cornell', 'overhead'])
     if not os.path.exists(GLINT):
         sys.exit(f'bench-peers: {GLINT} is missing: make build first')
     os.makedirs(OUT, exist_ok=True)
@@ -708,6 +712,16 @@ def main():
         results['scenes']['smallpt'] = measure_scene(
             'smallpt', cfg, runs, smallpt(cfg['size'], 2), glint('examples/smallpt.yaml', cfg['size'], 2),
             ref_peer=smallpt(cfg['size'], 1))
+    if 'smallpt-bsdf-only' in only:
+        # smallpt's own estimator in glint: no light sample, light found only by BSDF samples (the path
+        # integrator's sample_lights: false). Not glint's default, so no target is read from it: it
+        # tells what of the equal-spp ratio above is the cost of next-event estimation's shadow rays and
+        # what is glint's machinery. Its noise per sample is smallpt's kind, so its ladder is smallpt's.
+        cfg = {k: v for k, v in mode['smallpt'].items() if k != 'glint_ladder'}
+        results['scenes']['smallpt-bsdf-only'] = measure_scene(
+            'smallpt-bsdf-only', cfg, runs, smallpt(cfg['size'], 2),
+            glint('examples/smallpt.yaml', cfg['size'], 2, estimator='bsdf-only'),
+            ref_peer=smallpt(cfg['size'], 1), ref_key='smallpt')
     if 'rtiow' in only:
         cfg = mode['rtiow']
         results['scenes']['rtiow-final'] = measure_scene(

@@ -53,6 +53,10 @@ void expect_same_radiance(const Film& a, const Film& b) {
     EXPECT_LT(d.standard_error, 0.05 * mean_a.mean);  // and the comparison has power
 }
 
+// The path tracer as built and with light sampling off (smallpt's estimator: each bounce's emission
+// found by the BSDF sample alone, counted in full).
+constexpr const char* kPathEstimators[] = {"path", "{type: path, sample_lights: false}"};
+
 TEST(Furnace, ConvexMatteUnderUniformSkyReflectsAlbedoTimesRadiance) {
     for (const double albedo : {0.5, 1.0}) {
         const Scene scene = scene_from_yaml(R"(
@@ -77,16 +81,20 @@ TEST(Furnace, ConvexMatteUnderAConstantImageEnvironment) {
         v = 0.7f;
     }
     write_image(sky, file);
-    const Scene scene = scene_from_yaml(R"(
-render: {width: 16, height: 16, samples: 16, integrator: path, max_depth: 50}
+    // Sampled by light samples and MIS, or found by the BSDF's samples alone.
+    for (const char* integrator : kPathEstimators) {
+        const Scene scene = scene_from_yaml(std::string(R"(
+render: {width: 16, height: 16, samples: 16, max_depth: 50, integrator: )") +
+                                            integrator + R"(}
 camera: {eye: [0, 0, 4], look_at: [0, 0, 0], fov: 30}
 objects: [{type: sphere, radius: 1, material: {type: matte, albedo: 0.5}}]
-lights: [{type: environment, image: ')" +
-                                        file.string() + R"(', rotation: 40}]
+lights: [{type: environment, image: ')" + file.string() +
+                                            R"(', rotation: 40}]
 )");
+        const Film film = render_film(scene);
+        expect_mean(region_mean(film, 4, 4, 12, 12), 0.5 * 0.7f);
+    }
     std::filesystem::remove(file);
-    const Film film = render_film(scene);
-    expect_mean(region_mean(film, 4, 4, 12, 12), 0.5 * 0.7f);
 }
 
 TEST(Furnace, MatteFloorUnderAGradientSkyWithoutShadowRays) {
@@ -186,15 +194,40 @@ objects:
 }
 
 TEST(Furnace, InsideAClosedEmittingSphereRadianceIsEmissionOverOneMinusAlbedo) {
-    for (const double albedo : {0.5, 0.8}) {
-        Scene scene = scene_from_yaml(R"(
-render: {width: 8, height: 8, samples: 16, integrator: path, max_depth: 1000}
+    for (const char* integrator : kPathEstimators) {
+        for (const double albedo : {0.5, 0.8}) {
+            Scene scene = scene_from_yaml(std::string(R"(
+render: {width: 8, height: 8, samples: 16, max_depth: 1000, integrator: )") +
+                                          integrator + R"(}
 camera: {eye: [0, 0, 0], look_at: [0, 0, -1], fov: 90}
 objects: [{type: sphere, center: [0.1, 0.2, 0], radius: 1}]
 )");
-        set_material(scene, 0, std::make_unique<test::EmittingMatte>(Rgb(albedo), Rgb(1.0)));
-        const Film film = render_film(scene);
-        expect_mean(region_mean(film, 0, 0, 8, 8), 1 / (1 - albedo));  // Lₑ Σ ρᵏ
+            set_material(scene, 0, std::make_unique<test::EmittingMatte>(Rgb(albedo), Rgb(1.0)));
+            const Film film = render_film(scene);
+            expect_mean(region_mean(film, 0, 0, 8, 8), 1 / (1 - albedo));  // Lₑ Σ ρᵏ
+        }
+    }
+}
+
+TEST(Lambert, MatteUnderASphereLightReflectsAlbedoTimesRadianceTimesSineSquared) {
+    // A sphere light of radius R and radiance L whose centre is at height H on the normal of a
+    // Lambertian floor gives it the irradiance π L sin²α, sin α = R/H, so the floor reflects
+    // ρ L (R/H)² = 0.5 × 2 × (1/4)² = 0.0625. At a distance x from the foot of the normal it is
+    // π L R² H / (H² + x²)^(3/2), 1.5 x²/H² less; the camera sees a patch 0.007 long there, where
+    // that is under 10⁻⁵ (light sampling's standard error here is about 10⁻⁵ of the value).
+    for (const char* integrator : kPathEstimators) {
+        const Scene scene = scene_from_yaml(std::string(R"(
+render: {width: 8, height: 8, samples: 1024, max_depth: 50, integrator: )") +
+                                            integrator + R"(}
+camera: {eye: [3, 1.5, 0], look_at: [0, 0, 0], fov: 0.1}
+objects: [{type: plane, normal: [0, 1, 0], material: {type: matte, albedo: 0.5}}]
+lights: [{type: area, shape: {type: sphere, center: [0, 4, 0], radius: 1}, radiance: 2}]
+)");
+        Film film(8, 8);
+        const RenderStats stats = render(scene, film);
+        expect_mean(region_mean(film, 0, 0, 8, 8), 0.0625);
+        const bool samples_lights = std::string(integrator) == "path";
+        EXPECT_EQ(stats.rays.shadow > 0, samples_lights) << integrator;
     }
 }
 

@@ -39,6 +39,20 @@ TEST(SceneChecks, MirrorsUnderRaycastAreNamedWithTheFix) {
               "mirror"));
 }
 
+TEST(SceneChecks, PointLightsUnseenByAPathWithoutLightSamplingAreNamed) {
+    const std::string objects = "objects:\n  - {type: sphere, radius: 1}\n";
+    const std::string point = "lights:\n  - {type: point, position: [0, 3, 3], intensity: 10}\n";
+    const std::string off = "render: {integrator: {type: path, sample_lights: false}}\n";
+    EXPECT_TRUE(warns(off + objects + point, "sample_lights: false"));
+    EXPECT_FALSE(warns("render: {integrator: path}\n" + objects + point, "sample_lights"));
+    // Light that its BSDF samples can find: an emitter, an environment, a background.
+    EXPECT_FALSE(warns(
+        off + objects + point + "  - {type: area, shape: {type: sphere, center: [0, 5, 0], radius: 1}}\n",
+        "sample_lights"));
+    EXPECT_FALSE(warns(off + objects + point + "  - {type: environment, radiance: 0.5}\n", "sample_lights"));
+    EXPECT_FALSE(warns(off + "background: [0.2, 0.3, 0.4]\n" + objects + point, "sample_lights"));
+}
+
 TEST(SceneChecks, TheExamplesGetNoWarning) {
     for (const auto& entry :
          std::filesystem::directory_iterator(std::filesystem::path(GLINT_SOURCE_DIR) / "examples")) {

@@ -31,7 +31,10 @@ const NameTable<IntegratorEntry>& integrator_table() {
         {"path", "path tracing with next-event estimation and multiple importance sampling",
          [](Params& p, const RenderSettings& s) {
              const int depth = max_depth(p, s);
-             return std::make_unique<PathIntegrator>(depth, p.boolean("learn_light_visibility", true));
+             PathOptions options;
+             options.sample_lights = p.boolean("sample_lights", true);
+             options.learn_light_visibility = p.boolean("learn_light_visibility", true);
+             return std::make_unique<PathIntegrator>(depth, options);
          }},
     };
     return table;

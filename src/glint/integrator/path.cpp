@@ -23,7 +23,7 @@ constexpr double kRouletteThroughput = 0.25;
 
 std::unique_ptr<Integrator> PathIntegrator::prepared(const World& world, const Camera& camera,
                                                      FilmSize film) const {
-    if (!learn_light_visibility_) {
+    if (!options_.sample_lights || !options_.learn_light_visibility) {
         return nullptr;
     }
     auto visibility =
@@ -102,7 +102,10 @@ __attribute__((always_inline)) inline bool PathIntegrator::shade(const World& wo
     if (!path.found) {
         const Vec3& dir = ray.direction;
         const Rgb sky = world.escaped(dir);
-        if (path.specular || !world.environment || !world.environment->worth_sampling_in_paths()) {
+        // In full when no light sample could have found the sky: after a delta lobe, without light
+        // sampling, or from a sky that is not sampled.
+        if (path.specular || !options_.sample_lights || !world.environment ||
+            !world.environment->worth_sampling_in_paths()) {
             radiance += throughput * sky;
         } else {
             radiance += throughput * sky *
@@ -117,7 +120,7 @@ __attribute__((always_inline)) inline bool PathIntegrator::shade(const World& wo
     const Rgb emitted = material.emitted(hit, wo);
     if (!emitted.is_black()) {
         const std::int32_t light_index = world.light_index_of(hit);
-        if (path.specular || light_index < 0) {
+        if (path.specular || light_index < 0 || !options_.sample_lights) {
             radiance += throughput * emitted;
         } else {
             const auto index = static_cast<std::size_t>(light_index);
@@ -158,7 +161,8 @@ __attribute__((noinline)) bool PathIntegrator::scatter(const World& world, Path&
     // BSDF has its frame already).
     hit.shading_normal = face_forward(hit.shading_normal, wo);
     const Hit& at = hit;
-    for (std::size_t index = 0; index < world.lights.size(); ++index) {
+    const std::size_t lights_to_sample = options_.sample_lights ? world.lights.size() : 0;
+    for (std::size_t index = 0; index < lights_to_sample; ++index) {
         const Light& light = *world.lights[index];
         if (!light.physical() || !light.worth_sampling_in_paths()) {
             continue;

@@ -17,10 +17,21 @@ namespace glint {
 //
 // Sphere lights that the view sees only in part (smallpt's, buried in its ceiling) are sampled with
 // what LightVisibility learns before the first sample (`learn_light_visibility`, on by default).
+//
+// With `sample_lights` off it is the estimator of smallpt and of the RTIOW books: no light sample and no
+// shadow ray, light found only where a BSDF sample hits an emitter or escapes to the sky, and counted
+// in full there. It converges to the same image (delta lights aside, which nothing hits), with more
+// noise per sample for less work per sample: the way to compare glint with those renderers sample for
+// sample, and to see what next-event estimation buys.
+struct PathOptions {
+    bool sample_lights = true;           // next-event estimation, weighed against BSDF sampling by MIS
+    bool learn_light_visibility = true;  // used only when sample_lights is on
+};
+
 class PathIntegrator final : public Integrator {
   public:
-    explicit PathIntegrator(int max_depth, bool learn_light_visibility = true)
-        : max_depth_(max_depth), learn_light_visibility_(learn_light_visibility) {}
+    explicit PathIntegrator(int max_depth, PathOptions options = {})
+        : max_depth_(max_depth), options_(options) {}
     Rgb radiance(const World& world, const Ray& ray, SampleStream& samples, RayCounters& rays) const override;
     // All the camera rays first, handed to the accelerator together, then each path on from its first
     // hit. Rays of one pixel, or of neighbouring pixels, take nearly the same way through the scene's
@@ -37,6 +48,8 @@ class PathIntegrator final : public Integrator {
                                          FilmSize film) const override;
     // What the copy made by prepared() learnt (nullptr for this integrator as built).
     const LightVisibility* light_visibility() const { return visibility_.get(); }
+    // Whether each vertex samples the lights (next-event estimation); off, only BSDF samples find light.
+    bool samples_lights() const { return options_.sample_lights; }
 
   private:
     // One path's state from bounce to bounce (path.cpp).
@@ -62,7 +75,7 @@ class PathIntegrator final : public Integrator {
                         const Hit* on_light) const;
 
     int max_depth_;
-    bool learn_light_visibility_;
+    PathOptions options_;
     std::shared_ptr<const LightVisibility> visibility_;  // shared by copies; never changed once learnt
 };
 

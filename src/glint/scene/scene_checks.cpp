@@ -2,7 +2,9 @@
 
 #include <algorithm>
 
+#include "glint/integrator/path.hpp"
 #include "glint/integrator/raycast.hpp"
+#include "glint/light/area.hpp"
 #include "glint/material/material.hpp"
 
 namespace glint {
@@ -42,6 +44,20 @@ std::vector<std::string> scene_warnings(const Scene& scene) {
             "the scene has no light: no light source, no emissive surface, no environment and a black "
             "background, so the image will be black; add one under `lights:` or give a surface an `emissive` "
             "material (docs/scene-format.md)");
+    }
+    const auto* path = dynamic_cast<const PathIntegrator*>(scene.view.integrator.get());
+    if (lit && path != nullptr && !path->samples_lights()) {
+        // Without light samples, light is found only where a BSDF sample meets an emitter or the sky.
+        const bool found_by_bsdf_samples =
+            world.environment || !black(world.background) ||
+            std::any_of(world.lights.begin(), world.lights.end(),
+                        [](const auto& light) { return dynamic_cast<const AreaLight*>(light.get()); });
+        if (!found_by_bsdf_samples) {
+            warnings.push_back(
+                "the path integrator with `sample_lights: false` finds light only where its rays meet an "
+                "emitter or the sky, never a point, spot or directional light, and the scene has no other "
+                "light, so the image will be black; leave `sample_lights` on (docs/scene-format.md)");
+        }
     }
     if (dynamic_cast<const RaycastIntegrator*>(scene.view.integrator.get())) {
         const bool any_delta = std::any_of(world.materials.begin(), world.materials.end(),
