@@ -213,8 +213,8 @@ TEST(Lambert, MatteUnderASphereLightReflectsAlbedoTimesRadianceTimesSineSquared)
     // A sphere light of radius R and radiance L whose centre is at height H on the normal of a
     // Lambertian floor gives it the irradiance π L sin²α, sin α = R/H, so the floor reflects
     // ρ L (R/H)² = 0.5 × 2 × (1/4)² = 0.0625. At a distance x from the foot of the normal it is
-    // π L R² H / (H² + x²)^(3/2), 1.5 x²/H² less; the camera sees a patch 0.007 long there, where
-    // that is under 10⁻⁵ (light sampling's standard error here is about 10⁻⁵ of the value).
+    // π L R² H / (H² + x²)^(3/2), 1.5 x²/H² less; the camera sees a patch 0.013 long centred on the
+    // foot, where that is under 10⁻⁵ (light sampling's standard error here is about 10⁻⁵ of the value).
     for (const char* integrator : kPathEstimators) {
         const Scene scene = scene_from_yaml(std::string(R"(
 render: {width: 8, height: 8, samples: 1024, max_depth: 50, integrator: )") +
