@@ -172,14 +172,15 @@ class Renderer:
         return self.collect(self.launch(spp, seed, path), path)
 
 
-def glint(scene, size, threads, estimator=None):
-    """glint on a scene; estimator 'bsdf-only' switches the path tracer's light sampling off."""
-    extra = ['--set', 'render.integrator.sample_lights=false'] if estimator == 'bsdf-only' else []
+def glint(scene, size, threads, sample_lights=True):
+    """glint on a scene; sample_lights=False switches the path tracer's light sampling off (named
+    'glint Nt bsdf-only')."""
+    extra = [] if sample_lights else ['--set', 'render.integrator.sample_lights=false']
 
     def command(spp, seed, path):
         return [GLINT, 'render', os.path.join(ROOT, scene), '--width', str(size[0]), '--height', str(size[1]),
                 '--spp', str(spp), '--seed', str(seed), '--threads', str(threads), '-o', path] + extra, None
-    return Renderer(f'glint {threads}t' + (f' {estimator}' if estimator else ''), threads, command, 'file')
+    return Renderer(f'glint {threads}t' + ('' if sample_lights else ' bsdf-only'), threads, command, 'file')
 
 
 def smallpt(size, threads):
@@ -720,7 +721,7 @@ def main():
         cfg = {k: v for k, v in mode['smallpt'].items() if k != 'glint_ladder'}
         results['scenes']['smallpt-bsdf-only'] = measure_scene(
             'smallpt-bsdf-only', cfg, runs, smallpt(cfg['size'], 2),
-            glint('examples/smallpt.yaml', cfg['size'], 2, estimator='bsdf-only'),
+            glint('examples/smallpt.yaml', cfg['size'], 2, sample_lights=False),
             ref_peer=smallpt(cfg['size'], 1), ref_key='smallpt')
     if 'rtiow' in only:
         cfg = mode['rtiow']
