@@ -60,17 +60,19 @@ struct PathIntegrator::Path {
     SampleStream* samples;
     Rgb radiance;
     Rgb throughput{1.0};
-    bool specular = true;  // the last bounce was a delta lobe (or the camera): emission counts in full
-    bool found = false;    // whether this bounce's ray hit anything (in *current)
+    // What this bounce's ray meets counts in full, with no MIS weight: no light sample could have found
+    // it, since the last bounce was a delta lobe (or the camera's ray), or the lights are not sampled.
+    bool counts_in_full = true;
+    bool found = false;  // whether this bounce's ray hit anything (in *current)
     int bounce = 0;
     double bsdf_pdf = 0;  // solid-angle density of the last BSDF sample
     // This bounce's hit and the last vertex (facing the way the path came): two records that trade
     // places each bounce, since copying a 112-byte Hit, and a facing copy of it, cost ~45 instructions
     // a vertex (2 % of the Cornell box).
     // Both start as plain storage (a union, not a Hit{} to clear): each trace clears the record it fills
-    // (trace(), trace_together()), and the last one is read only after a bounce (for MIS, when that
-    // bounce was not specular), when it is a record filled there. Clearing them here as well cost
-    // RTIOW's final scene 1.6 % of its time.
+    // (trace(), trace_together()), and the last one is read only after a bounce (for MIS, when what
+    // that bounce's ray meets does not count in full), when it is a record filled there. Clearing them here
+    // as well cost RTIOW's final scene 1.6 % of its time.
     union Record {
         Record() {}
         Hit hit;
@@ -102,10 +104,7 @@ __attribute__((always_inline)) inline bool PathIntegrator::shade(const World& wo
     if (!path.found) {
         const Vec3& dir = ray.direction;
         const Rgb sky = world.escaped(dir);
-        // In full when no light sample could have found the sky: after a delta lobe, without light
-        // sampling, or from a sky that is not sampled.
-        if (path.specular || !options_.sample_lights || !world.environment ||
-            !world.environment->worth_sampling_in_paths()) {
+        if (path.counts_in_full || !world.environment || !world.environment->worth_sampling_in_paths()) {
             radiance += throughput * sky;
         } else {
             radiance += throughput * sky *
@@ -120,7 +119,7 @@ __attribute__((always_inline)) inline bool PathIntegrator::shade(const World& wo
     const Rgb emitted = material.emitted(hit, wo);
     if (!emitted.is_black()) {
         const std::int32_t light_index = world.light_index_of(hit);
-        if (path.specular || light_index < 0 || !options_.sample_lights) {
+        if (path.counts_in_full || light_index < 0) {
             radiance += throughput * emitted;
         } else {
             const auto index = static_cast<std::size_t>(light_index);
@@ -192,7 +191,7 @@ __attribute__((noinline)) bool PathIntegrator::scatter(const World& world, Path&
         return false;
     }
     throughput *= s->weight;
-    path.specular = s->delta;
+    path.counts_in_full = s->delta || !options_.sample_lights;
     path.bsdf_pdf = s->pdf;
     std::swap(path.last, path.current);
 
