@@ -4,7 +4,6 @@
 
 #include "glint/integrator/path.hpp"
 #include "glint/integrator/raycast.hpp"
-#include "glint/light/area.hpp"
 #include "glint/material/material.hpp"
 
 namespace glint {
@@ -50,8 +49,8 @@ std::vector<std::string> scene_warnings(const Scene& scene) {
         // Without light samples, light is found only where a BSDF sample meets an emitter or the sky.
         const bool found_by_bsdf_samples =
             world.environment || !black(world.background) ||
-            std::any_of(world.lights.begin(), world.lights.end(),
-                        [](const auto& light) { return dynamic_cast<const AreaLight*>(light.get()); });
+            std::any_of(world.shape_lights.begin(), world.shape_lights.end(),
+                        [](std::int32_t light) { return light >= 0; });  // a shape that is a light
         if (!found_by_bsdf_samples) {
             warnings.push_back(
                 "the path integrator with `sample_lights: false` finds light only where its rays meet an "
