@@ -360,9 +360,10 @@ int run_render(const RenderOptions& options) {
                                             std::to_string(settings.crop->y0) + "-" +
                                             std::to_string(settings.crop->y1 - 1) + ")"
                                       : "";
-        std::fprintf(stderr, "glint: %dx%d%s, %u spp, %.2f s, %.2f M rays, %.2f Mrays/s -> %s\n",
-                     settings.width, settings.height, part.c_str(), stats.samples_per_pixel, stats.seconds,
-                     stats.rays.total() * 1e-6, stats.mrays_per_second(), output.string().c_str());
+        std::fprintf(stderr, "glint: %dx%d%s, %u spp, %.2f s, %s, %.2f Mrays/s -> %s\n", settings.width,
+                     settings.height, part.c_str(), stats.samples_per_pixel, stats.seconds,
+                     glint::cli::rays_summary(stats.rays).c_str(), stats.mrays_per_second(),
+                     output.string().c_str());
     }
     return 0;
 }

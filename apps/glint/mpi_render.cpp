@@ -370,9 +370,10 @@ int write_gathered(const RenderOptions& options, const PreparedRender& prepared,
         return 1;
     }
     if (!options.quiet) {
-        std::fprintf(stderr, "glint: %dx%d, %u spp, %.2f s, %.2f M rays, %.2f Mrays/s, %d MPI ranks -> %s\n",
+        std::fprintf(stderr, "glint: %dx%d, %u spp, %.2f s, %s, %.2f Mrays/s, %d MPI ranks -> %s\n",
                      settings.width, settings.height, stats.samples_per_pixel, stats.seconds,
-                     stats.rays.total() * 1e-6, stats.mrays_per_second(), ranks, output.string().c_str());
+                     rays_summary(stats.rays).c_str(), stats.mrays_per_second(), ranks,
+                     output.string().c_str());
     }
     return 0;
 }

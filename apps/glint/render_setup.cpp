@@ -77,6 +77,14 @@ void print_nonfinite_warning(const RenderStats& stats) {
     }
 }
 
+std::string rays_summary(const RayCounters& rays) {
+    char text[160];
+    std::snprintf(text, sizeof text, "%.2f M rays (%.2f M camera, %.2f M bounces, %.2f M shadow)",
+                  static_cast<double>(rays.total()) * 1e-6, static_cast<double>(rays.camera) * 1e-6,
+                  static_cast<double>(rays.secondary) * 1e-6, static_cast<double>(rays.shadow) * 1e-6);
+    return text;
+}
+
 ProgressBar::ProgressBar(bool enabled) : enabled_(enabled), start_(std::chrono::steady_clock::now()) {}
 
 void ProgressBar::update(double fraction) {

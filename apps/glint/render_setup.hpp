@@ -64,6 +64,11 @@ Image film_window(const Film& film, const PixelWindow& window);
 // The warning for samples left out as NaN or infinite; nothing when there were none.
 void print_nonfinite_warning(const RenderStats& stats);
 
+// The summary's rays, in millions, and what they were: "16.50 M rays (2.56 M camera, 6.99 M bounces,
+// 6.95 M shadow)". What next-event estimation costs is the shadow rays; bench/peers.py weighs
+// bench/accel's kernel rates by this mix.
+std::string rays_summary(const RayCounters& rays);
+
 // A progress bar on stderr: percentage, elapsed time and an estimate of the time left.
 class ProgressBar {
   public:

@@ -1,6 +1,8 @@
 // The command line as a user meets it: the default scene, every example, help and version.
 #include <gtest/gtest.h>
 
+#include <cstdio>
+
 #include "glint/image/image_io.hpp"
 #include "test_util.hpp"
 
@@ -18,6 +20,40 @@ TEST(Cli, RendersTheDefaultSceneToPngWithASummary) {
     EXPECT_NE(r.output.find("Mrays/s"), std::string::npos) << r.output;
     // No progress bar when stderr is not a terminal.
     EXPECT_EQ(r.output.find("ETA"), std::string::npos) << r.output;
+}
+
+// The rays by kind in the summary of a render of the default scene at 250 × 100 pixels, 4 spp, with
+// `integrator`: "N M rays (C M camera, B M bounces, S M shadow)".
+struct RaysInSummary {
+    double total = -1, camera = -1, bounces = -1, shadow = -1;
+};
+RaysInSummary rays_of_render(const std::string& integrator) {
+    test::TempDir dir;
+    const auto r = test::run_glint("render --width 250 --height 100 --spp 4 --integrator " + integrator +
+                                   " -o '" + (dir / "a.pfm").string() + "'");
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    RaysInSummary rays;
+    const std::size_t at = r.output.rfind(" M rays (");
+    const std::size_t start = at == std::string::npos ? at : r.output.rfind(", ", at);
+    if (start == std::string::npos ||
+        std::sscanf(r.output.c_str() + start + 2, "%lf M rays (%lf M camera, %lf M bounces, %lf M shadow)",
+                    &rays.total, &rays.camera, &rays.bounces, &rays.shadow) != 4) {
+        ADD_FAILURE() << "no rays by kind in: " << r.output;
+    }
+    return rays;
+}
+
+TEST(Cli, TheSummaryCountsEachKindOfRay) {
+    // One camera ray a sample: 250 × 100 pixels × 4 samples = 0.10 M.
+    const RaysInSummary path = rays_of_render("path");
+    EXPECT_EQ(path.camera, 0.10);
+    EXPECT_GT(path.bounces, 0);
+    EXPECT_GT(path.shadow, 0);
+    EXPECT_NEAR(path.camera + path.bounces + path.shadow, path.total, 0.015);  // each rounded to 0.01
+    // The paper's ray casting traces camera and shadow rays, and no bounce.
+    const RaysInSummary cast = rays_of_render("raycast");
+    EXPECT_EQ(cast.camera, 0.10);
+    EXPECT_EQ(cast.bounces, 0.0);
 }
 
 TEST(Cli, WritesExrAndPfmAndRejectsUnknownExtensions) {
