@@ -409,6 +409,17 @@ def glint_rays_per_second(err):
     return float(m[-1]) if m else None
 
 
+def glint_ray_mix(err):
+    """The shares of camera, bounce and shadow rays in glint's summary ('N M rays (C M camera, B M
+    bounces, S M shadow)'), keyed as bench/accel's ray sets are; None when the summary has no kinds."""
+    m = re.findall(r'([\d.]+) M camera, ([\d.]+) M bounces, ([\d.]+) M shadow', err)
+    if not m:
+        return None
+    counts = dict(zip(('primary', 'diffuse', 'shadow'), map(float, m[-1])))
+    total = sum(counts.values())
+    return {k: v / total for k, v in counts.items()} if total > 0 else None
+
+
 def measure_scene(key, cfg, runs, peer, glint_one, glint_all=None, bvh_peer=None, ref_peer=None, ref_key=None):
     """Everything for one scene: equal-spp times, RMSE ladders and fits, the convergence check. ref_key:
     the scene whose reference to use (default: key's own)."""
@@ -506,6 +517,7 @@ def measure_scene(key, cfg, runs, peer, glint_one, glint_all=None, bvh_peer=None
             'peer_cpu_s': median(peer_cpu), 'glint_cpu_s': median(cpu[other_name]),
             'equal_spp_cpu_ratio': median(peer_cpu) / median(cpu[other_name]),
             'glint_mrays_per_s': median([glint_rays_per_second(e) or 0 for _, e in images[other_name]]),
+            'glint_ray_mix': glint_ray_mix(images[other_name][0][1]),
             'target_rmse_relative': target / ref_level, 'target': f'{peer.name} at {cfg["target"]} spp',
             'convergence': conv, 'note': note,
             # The ratio the targets are read from: to equal RMSE, the median over the alternating rounds
@@ -623,20 +635,27 @@ def kernel_rates(mesh_name, min_time):
     return rates
 
 
-def overhead_result(kernel, whole, render_label):
-    """Prints and returns one scene's shading overhead: the whole-render rate over the kernel's."""
-    # The whole-render mix (primary rays, diffuse bounces, shadow rays) weights the three kinds about
-    # equally: time per ray is the mean of the times, so the rate is the harmonic mean.
-    kernel_mix = 3 / sum(1 / r for r in kernel.values())
+def overhead_result(kernel, whole, render_label, mix=None):
+    """Prints and returns one scene's shading overhead: the whole-render rate over the kernel's on the
+    render's own mix of rays (the issue's "the same kind of rays"): the time per ray of a mix is the
+    mean of the kinds' times weighed by their shares, so the rate is the weighted harmonic mean. `mix`:
+    the render's shares of primary, diffuse and shadow rays (glint's summary); without it, equal shares.
+    The equal-share rate, which the notes quoted before the summary counted each kind, is given too."""
+    equal_mix = len(kernel) / sum(1 / r for r in kernel.values())
+    kernel_mix = 1 / sum(mix[k] / kernel[k] for k in kernel) if mix else equal_mix
     log(f'  kernel (glint BVH, 2 threads): ' + ', '.join(f'{k} {v:.2f}' for k, v in kernel.items())
-        + f' Mrays/s; harmonic mean {kernel_mix:.2f}')
+        + f' Mrays/s; on the render\'s mix of rays {kernel_mix:.2f}'
+        + (' (' + ', '.join(f'{k} {100 * v:.1f} %' for k, v in mix.items()) + ')' if mix else ' (equal shares)')
+        + f'; on equal shares {equal_mix:.2f}')
     log(f'  glint render ({render_label}): {whole:.2f} Mrays/s')
-    log(f'  whole-render / kernel: {whole / kernel_mix:.2f} (target >= 0.6)')
-    return {'kernel_mrays_per_s': kernel, 'kernel_mix_mrays_per_s': kernel_mix,
-            'whole_render_mrays_per_s': whole, 'ratio': whole / kernel_mix, 'target': 0.6}
+    log(f'  whole-render / kernel: {whole / kernel_mix:.2f} (target >= 0.6); on equal shares '
+        f'{whole / equal_mix:.2f}')
+    return {'kernel_mrays_per_s': kernel, 'render_ray_mix': mix, 'kernel_mix_mrays_per_s': kernel_mix,
+            'kernel_equal_shares_mrays_per_s': equal_mix, 'whole_render_mrays_per_s': whole,
+            'ratio': whole / kernel_mix, 'ratio_equal_shares': whole / equal_mix, 'target': 0.6}
 
 
-def shading_overhead(cfg, cornell):
+def shading_overhead(cfg, cornell, cornell_mix=None):
     result = {}
     if not os.path.exists(BUNNY):
         log(f'\n== shading overhead: {BUNNY} is absent: the bunny is skipped')
@@ -669,17 +688,18 @@ def shading_overhead(cfg, cornell):
                         os.path.join(OUT, 'bunny.pfm')]) for i in range(3)]
         whole = median([glint_rays_per_second(r.err) for r in renders])
         result['bunny'] = overhead_result(kernel, whole,
-                                          f'path, max_depth 2, {w}x{h}, {cfg["spp"]} spp, 2 threads')
+                                          f'path, max_depth 2, {w}x{h}, {cfg["spp"]} spp, 2 threads',
+                                          mix=glint_ray_mix(renders[0].err))
     # Cornell: bench/accel's Cornell ray sets are rtiow-cornell.yaml's own camera rays, a cosine bounce
     # from each hit and shadow rays to uniform points of its light; the whole-render rate is glint's
-    # on that scene (2 threads, from the pair's runs), which traces the same three kinds. Their mix is
-    # weighted equally, as for the bunny (overhead_result).
+    # on that scene (2 threads, from the pair's runs), which traces the same three kinds. The kernel's
+    # rates are weighed by the render's own shares of them, as for the bunny (overhead_result).
     if not os.path.exists(ACCEL) or cornell != cornell:  # NaN: the Cornell pair was not run
         result['cornell'] = {'skipped': 'glint_bench_accel not built or the Cornell pair not run'}
         return result
     log('\n== shading overhead: the Cornell box (bench/accel kernel vs glint render, 2 threads)')
     result['cornell'] = overhead_result(kernel_rates('cornell', cfg['min_time']), cornell,
-                                        'rtiow-cornell.yaml, 2 threads')
+                                        'rtiow-cornell.yaml, 2 threads', mix=cornell_mix)
     return result
 
 
@@ -728,15 +748,16 @@ def main():
         results['scenes']['rtiow-final'] = measure_scene(
             'rtiow', cfg, runs, rtiow('b1f'), glint('examples/rtiow-final.yaml', cfg['size'], 1),
             glint('examples/rtiow-final.yaml', cfg['size'], 2), bvh_peer=rtiow('b2bvh', takes_args=False))
-    cornell_rate = None
+    cornell_rate = cornell_mix = None
     if 'cornell' in only:
         cfg = mode['cornell']
         results['scenes']['rtiow-cornell'] = measure_scene(
             'cornell', cfg, runs, rtiow('b2cbf'), glint('examples/rtiow-cornell.yaml', cfg['size'], 1),
             glint('examples/rtiow-cornell.yaml', cfg['size'], 2))
-        cornell_rate = results['scenes']['rtiow-cornell']['pairs']['b2cbf / glint 2t']['glint_mrays_per_s']
+        cornell_pair = results['scenes']['rtiow-cornell']['pairs']['b2cbf / glint 2t']
+        cornell_rate, cornell_mix = cornell_pair['glint_mrays_per_s'], cornell_pair['glint_ray_mix']
     if 'overhead' in only:
-        results['shading_overhead'] = shading_overhead(mode['bunny'], cornell_rate or float('nan'))
+        results['shading_overhead'] = shading_overhead(mode['bunny'], cornell_rate or float('nan'), cornell_mix)
 
     results['seconds'] = time.perf_counter() - t_start
     results['commands'] = COMMANDS
