@@ -3,7 +3,10 @@
 // diffuse-bounce rays (cosine-distributed from the primary hits) and shadow rays (towards a point
 // light). Also book 2's Cornell box (examples/rtiow-cornell.yaml: quads and two transformed boxes), with
 // the rays a render of it traces: its camera's, a bounce from each hit and shadow rays to points of its
-// light, so that bench-peers can set its whole-render rate against this kernel rate. Also: BVH build rate and
+// light; and `Rays/cornell/render/bvh`, the rays of a glint render of it replayed in the order the render
+// traced them (below: "A render's own rays, replayed"), so that bench-peers can set its whole-render rate
+// against this kernel rate (--render-scene=NAME=FILE replays a render of another scene file,
+// --render-spp=N sets the recorded render's samples a pixel, 16 by default). Also: BVH build rate and
 // bytes per triangle, and how the cost per ray grows from 1 k to 1 M triangles (UV spheres of exactly 1 024
 // and 1 048 576 triangles; also 2 k to 2 M, subdivided octahedra, whose triangles are roughly uniform, no
 // slivers at the poles). Ratios are printed at the end of the run, from the medians when the runs are
@@ -29,6 +32,7 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cassert>
 #include <charconv>
 #include <chrono>
@@ -40,6 +44,7 @@
 #include <optional>
 #include <random>
 #include <regex>
+#include <span>
 #include <stdexcept>
 
 #include "glint/accel/bvh.hpp"
@@ -48,8 +53,10 @@
 #include "glint/geometry/mesh.hpp"
 #include "glint/geometry/sphere.hpp"
 #include "glint/light/area.hpp"
+#include "glint/render/render.hpp"
 #include "glint/scene/scene.hpp"
 #include "glint/scene/scene_desc.hpp"
+#include "glint/scene/scene_set.hpp"
 
 namespace {
 
@@ -397,6 +404,205 @@ void BM_Rays(benchmark::State& state, const std::string& scene_name, const std::
     state.counters["tris"] = static_cast<double>(s.triangles);
 }
 
+// ---------------------------------------------------------------------------------------------------
+// A render's own rays, replayed. bench-peers sets glint's whole-render rate against this kernel's
+// (docs/benchmarks.md, "What is measured"). The ray sets above hold one kind of ray each, in pixel order:
+// neighbouring rays take the same branches, one after another. A render asks for its rays as its paths
+// make them: a pixel's camera rays, then each path's shadow ray and bounce in turn, from wherever the
+// path has got to. `Rays/NAME/render/bvh` records the queries that a glint render of a scene file asks
+// its accelerator, in the order it asks them (one thread), and replays them through that same
+// accelerator on kThreads threads, each taking runs of consecutive queries: the kernel on exactly the
+// render's rays, without the rest of the render.
+
+// One query as the render asked it. A packet (intersect_packet) is its rays' queries in a row, the first
+// of them giving their number.
+struct Query {
+    enum class Kind : std::uint8_t { nearest, any, packet };
+    Ray ray;
+    double t_max = 0;
+    Kind kind = Kind::nearest;
+    bool found = false;             // what the render's query found (the replay checks it finds the same)
+    std::uint32_t packet_size = 1;  // a packet's first query: how many rays; the rest of it: 0
+};
+constexpr int kMaxPacket = 64;
+
+// Passes every query to `traced` and appends it to `log`. Not thread-safe: the recorded render has one
+// thread.
+class RecordingAccelerator final : public Accelerator {
+  public:
+    RecordingAccelerator(std::shared_ptr<const Accelerator> traced, std::vector<Query>& log)
+        : traced_(std::move(traced)), log_(&log) {}
+    bool intersect(const Ray& ray, double t_max, Hit& hit) const override {
+        const bool found = traced_->intersect(ray, t_max, hit);
+        log_->push_back({ray, t_max, Query::Kind::nearest, found, 1});
+        return found;
+    }
+    void intersect_packet(const Ray* const* rays, int n, double t_max, Hit* const* hits,
+                          bool* found) const override {
+        if (n > kMaxPacket) {
+            throw std::runtime_error("a packet of more than kMaxPacket rays: raise kMaxPacket");
+        }
+        traced_->intersect_packet(rays, n, t_max, hits, found);
+        for (int k = 0; k < n; ++k) {
+            log_->push_back(
+                {*rays[k], t_max, Query::Kind::packet, found[k], k == 0 ? static_cast<std::uint32_t>(n) : 0});
+        }
+    }
+    bool traces_packets() const override { return traced_->traces_packets(); }
+    bool occluded(const Ray& ray, double t_max) const override {
+        const bool found = traced_->occluded(ray, t_max);
+        log_->push_back({ray, t_max, Query::Kind::any, found, 1});
+        return found;
+    }
+    Bounds3 bounds() const override { return traced_->bounds(); }
+
+  private:
+    std::shared_ptr<const Accelerator> traced_;
+    std::vector<Query>* log_;
+};
+
+struct RecordedRender {
+    std::shared_ptr<const World> world;              // which holds the shapes the accelerator points to
+    std::shared_ptr<const Accelerator> accelerator;  // the world's own, which the render traced
+    std::vector<Query> queries;
+    std::vector<std::size_t> runs;  // where each run of queries that one thread replays in order begins
+};
+
+// --render-scene=NAME=FILE (Rays/NAME/render/bvh; the Cornell box's is built in) and --render-spp=N.
+std::map<std::string, std::string> render_scene_files = {
+    {"cornell", GLINT_SOURCE_DIR "/examples/rtiow-cornell.yaml"}};
+std::uint32_t render_spp = 16;
+
+// Renders `file` at its own size and settings but render_spp samples a pixel (16: the render loop's
+// passes of 16, each pixel's paths together, as in a render of 64), recording what its world's
+// accelerator is asked (64 bytes a query, held until the replayed set is taken from them). The cache
+// hands the second build the accelerator of the first, wrapped.
+RecordedRender record_render(const std::string& file) {
+    SceneDesc desc = load_scene_file(file);
+    RenderFlags flags;
+    flags.samples_per_pixel = render_spp;
+    apply_flags(desc, flags);
+    WorldCache cache;
+    build_scene(desc, &cache);
+    RecordedRender recorded;
+    recorded.accelerator = cache.accelerator.accelerator;
+    const auto recorder = std::make_shared<RecordingAccelerator>(recorded.accelerator, recorded.queries);
+    cache.accelerator.accelerator = recorder;
+    Scene scene = build_scene(desc, &cache);
+    if (scene.world->accelerator != recorder) {
+        throw std::runtime_error(file + ": the second build did not take the cached accelerator");
+    }
+    recorded.world = scene.world;
+    scene.view.settings.threads = 1;
+    Film film(scene.view.settings.width, scene.view.settings.height);
+    const RenderStats stats = render(*scene.world, scene.view, film);
+    if (recorded.queries.size() != stats.rays.total()) {
+        throw std::runtime_error(file + ": recorded " + std::to_string(recorded.queries.size()) +
+                                 " queries, the render counted " + std::to_string(stats.rays.total()));
+    }
+    // The replayed set: kRuns runs of kRunLength consecutive queries (a packet is not cut), spread evenly
+    // over the render, 65 536 queries in all like the sets above, so that they stay in the caches as
+    // those do. Replayed from memory, a log as large as the Cornell box's at 16 spp (16 M queries, 1 GB)
+    // slows the kernel by itself, a cost no render has, as it makes each ray where it traces it: the
+    // Cornell box's own sets, each replayed 100 times over from such a log, ran at 0.83 (primary), 0.99
+    // (diffuse) and 0.57 (shadow) of their rates, and at 1.00 from a log of one copy.
+    constexpr std::size_t kRuns = 64, kRunLength = 1024;
+    std::vector<Query> all = std::move(recorded.queries);
+    recorded.queries.clear();
+    for (std::size_t r = 0; r < kRuns; ++r) {
+        std::size_t i = r * all.size() / kRuns;
+        while (i < all.size() && all[i].packet_size == 0) {
+            ++i;
+        }
+        const std::size_t begin = i;
+        while (i < all.size() && (i - begin < kRunLength || all[i].packet_size == 0)) {
+            ++i;
+        }
+        if (i > begin) {
+            recorded.runs.push_back(recorded.queries.size());
+            recorded.queries.insert(recorded.queries.end(), all.begin() + static_cast<std::ptrdiff_t>(begin),
+                                    all.begin() + static_cast<std::ptrdiff_t>(i));
+        }
+    }
+    return recorded;
+}
+
+const RecordedRender& recorded_render(const std::string& name) {
+    static std::map<std::string, RecordedRender> cache;
+    auto it = cache.find(name);
+    if (it == cache.end()) {
+        it = cache.emplace(name, record_render(render_scene_files.at(name))).first;
+    }
+    return it->second;
+}
+
+// Asks `accel` each of `queries` in order; returns how many found something.
+std::uint64_t replay(const Accelerator& accel, std::span<const Query> queries) {
+    std::uint64_t found = 0;
+    for (std::size_t i = 0; i < queries.size();) {
+        const Query& q = queries[i];
+        if (q.kind == Query::Kind::any) {
+            found += accel.occluded(q.ray, q.t_max) ? 1 : 0;
+            ++i;
+        } else if (q.kind == Query::Kind::nearest) {
+            Hit hit;
+            found += accel.intersect(q.ray, q.t_max, hit) ? 1 : 0;
+            ++i;
+        } else {
+            const int n = static_cast<int>(q.packet_size);
+            const Ray* rays[kMaxPacket];
+            Hit records[kMaxPacket];
+            Hit* hits[kMaxPacket];
+            bool hit_found[kMaxPacket];
+            for (int k = 0; k < n; ++k) {
+                rays[k] = &queries[i + static_cast<std::size_t>(k)].ray;
+                hits[k] = &records[k];
+            }
+            accel.intersect_packet(rays, n, q.t_max, hits, hit_found);
+            found += static_cast<std::uint64_t>(std::count(hit_found, hit_found + n, true));
+            i += static_cast<std::size_t>(n);
+        }
+    }
+    return found;
+}
+
+void BM_RenderRays(benchmark::State& state, const std::string& name) {
+    const RecordedRender& recorded = recorded_render(name);
+    const std::vector<Query>& queries = recorded.queries;
+    tbb::task_arena arena(kThreads);
+    std::uint64_t rays = 0, found = 0;
+    for (auto _ : state) {
+        std::atomic<std::uint64_t> found_now{0};
+        arena.execute([&] {
+            tbb::parallel_for(
+                tbb::blocked_range<std::size_t>(0, recorded.runs.size(), 1), [&](const auto& range) {
+                    for (std::size_t r = range.begin(); r < range.end(); ++r) {
+                        const std::size_t begin = recorded.runs[r];
+                        const std::size_t end =
+                            r + 1 < recorded.runs.size() ? recorded.runs[r + 1] : queries.size();
+                        found_now +=
+                            replay(*recorded.accelerator, std::span(queries).subspan(begin, end - begin));
+                    }
+                });
+        });
+        found = found_now;
+        rays += queries.size();
+    }
+    std::uint64_t shadow = 0, found_in_render = 0;
+    for (const Query& q : queries) {
+        shadow += q.kind == Query::Kind::any ? 1 : 0;
+        found_in_render += q.found ? 1 : 0;
+    }
+    if (found != found_in_render) {
+        state.SkipWithError("the replayed queries found other hits than the render's");
+        return;
+    }
+    state.counters["Mrays/s"] =
+        benchmark::Counter(static_cast<double>(rays) * 1e-6, benchmark::Counter::kIsRate);
+    state.counters["hit%"] = 100.0 * static_cast<double>(found) / static_cast<double>(queries.size());
+    state.counters["shadow%"] = 100.0 * static_cast<double>(shadow) / static_cast<double>(queries.size());
+}
+
 void BM_BuildLargeMesh(benchmark::State& state) {
     const MeshData& data = large_mesh_data();
     double bytes_per_triangle = 0;
@@ -443,6 +649,11 @@ void register_all() {
     for (const char* name : {"sphere1k", "sphere1M", "sphere2k", "sphere2M"}) {
         benchmark::RegisterBenchmark((std::string("Rays/") + name + "/primary/bvh").c_str(), BM_Rays,
                                      std::string(name), std::string("primary"), false)
+            ->UseRealTime()
+            ->Unit(benchmark::kMillisecond);
+    }
+    for (const auto& [name, file] : render_scene_files) {
+        benchmark::RegisterBenchmark(("Rays/" + name + "/render/bvh").c_str(), BM_RenderRays, name)
             ->UseRealTime()
             ->Unit(benchmark::kMillisecond);
     }
@@ -581,9 +792,21 @@ int main(int argc, char** argv) {
             }
         } else if (arg.starts_with("--embree-config=")) {
             embree_config = arg.substr(16);
+        } else if (arg.starts_with("--render-scene=") && arg.find('=', 15) != std::string::npos) {
+            const std::size_t equals = arg.find('=', 15);
+            render_scene_files[arg.substr(15, equals - 15)] = arg.substr(equals + 1);
+        } else if (arg.starts_with("--render-spp=")) {
+            const char* end = arg.data() + arg.size();
+            if (std::from_chars(arg.data() + 13, end, render_spp).ptr != end || render_spp == 0) {
+                std::fprintf(stderr, "--render-spp: expected a positive number, not '%s'\n",
+                             arg.c_str() + 13);
+                return 2;
+            }
         } else {
             std::fprintf(stderr,
-                         "unknown argument '%s' (expected --pairs=N, --embree-config=STRING or "
+                         "unknown argument '%s' (expected --pairs=N, --embree-config=STRING, "
+                         "--render-scene=NAME=FILE, "
+                         "--render-spp=N or "
                          "Google Benchmark's --benchmark_* flags)\n",
                          argv[i]);
             return 2;
