@@ -17,7 +17,8 @@ one run, alternating the two renderers (the machine is shared and noisy; medians
      rounds as (1) (and, beside it, from fits of log RMSE on log time: a quadratic, and lines);
   3. that glint converges to the peer's image: 16x16-pixel block means, z-scores against the noise of
      both sides (each estimated from two independent halves);
-  4. the shading overhead: glint's whole-render rays/s against bench/accel's kernel rays/s.
+  4. the shading overhead: glint's whole-render rays/s against bench/accel's kernel rays/s on the
+     render's own rays, alternating the two in as many rounds as the pairs have runs.
 docs/benchmarks.md explains the method. Results: build/bench-peers/results.json.
 """
 import argparse
@@ -618,13 +619,14 @@ def read_obj_bounds(path):
     return v.min(axis=0), v.max(axis=0)
 
 
-def kernel_rates(mesh_name, min_time, render_scene=None):
-    """bench/accel's BVH kernel Mrays/s (2 threads) for one scene: on its ray set of each kind (primary,
-    diffuse, shadow: each in pixel order), and on the rays of a glint render of the scene replayed in the
-    order the render traced them ('render'; the Cornell box's scene file is built into bench/accel, the
-    bunny's is `render_scene`)."""
+def kernel_rates(mesh_name, min_time, render_scene=None, sets=True):
+    """bench/accel's BVH kernel Mrays/s (2 threads) for one scene: on the rays of a glint render of the
+    scene replayed in the order the render traced them ('render'; the Cornell box's scene file is built
+    into bench/accel, the bunny's is `render_scene`), and, with `sets`, on its ray set of each kind
+    (primary, diffuse, shadow: each in pixel order)."""
     out = os.path.join(OUT, f'accel-{mesh_name}.json')
-    run([ACCEL, f'--benchmark_filter=^Rays/{mesh_name}/(primary|diffuse|shadow|render)/bvh/',  # then real_time
+    kinds = 'primary|diffuse|shadow|render' if sets else 'render'
+    run([ACCEL, f'--benchmark_filter=^Rays/{mesh_name}/({kinds})/bvh/',  # then real_time
          f'--benchmark_min_time={min_time}', f'--benchmark_out={out}', '--benchmark_out_format=json']
         + ([f'--render-scene={mesh_name}={render_scene}'] if render_scene else []))
     with open(out) as f:
@@ -643,43 +645,70 @@ def kernel_rates(mesh_name, min_time, render_scene=None):
     return rates
 
 
-def overhead_result(kernel, whole, render_label, mix=None):
+def overhead_rounds(mesh_name, rounds, min_time, render, render_scene=None):
+    """The kernel's rates and the whole render's in `rounds` alternating rounds: each round runs bench/accel
+    (the sets of one kind only in the first, for the older readings) and then one glint render
+    (`render(i)`, a finished Run). Alternating, as the pairs are read, so that the machine's drift during a
+    run falls on both sides of each round's ratio; one reading of each had the ratio move by a few per
+    cent between runs of the same code. Returns the first round's kernel rates with 'render' replaced by
+    the median replay rate, the rounds' replay rates, their render rates, and the first render's Run."""
+    replays, wholes, first = [], [], None
+    kernel = None
+    for i in range(rounds):
+        rates = kernel_rates(mesh_name, min_time, render_scene, sets=(i == 0))
+        kernel = kernel or rates
+        replays.append(rates['render'])
+        r = render(i)
+        first = first or r
+        wholes.append(glint_rays_per_second(r.err))
+    kernel = dict(kernel, render=median(replays))
+    return kernel, replays, wholes, first
+
+
+def overhead_result(kernel, replays, wholes, render_label, mix=None):
     """Prints and returns one scene's shading overhead: the whole-render rate over the kernel's on the
-    same rays. The target is read on bench/accel's replay of the render's own rays in the order the
-    render traced them (kernel['render']): the issue's "the same kind of rays" taken as the very rays.
-    Also printed, as the notes before 2026-12-03 read it: the kernel's ray sets of each kind, each in pixel
-    order, weighed by the render's shares of the kinds (`mix`, from glint's summary; the time per ray of
-    a mix is the mean of the kinds' times weighed by their shares, so the rate is the weighted harmonic
-    mean), and on equal shares. Those sets run the kernel faster than any render's rays do: neighbouring
-    rays of one kind take the same branches (docs/benchmarks.md, "What is measured", item 4)."""
-    replay = kernel['render']
+    same rays, round by round (overhead_rounds); the target is read on the median of the rounds' ratios.
+    The kernel's rate is bench/accel's replay of the render's own rays in the order the render traced
+    them: the issue's "the same kind of rays" taken as the very rays.
+    Also printed, as the notes before 2026-12-03 read it (on the median render rate): the kernel's ray
+    sets of each kind, each in pixel order, weighed by the render's shares of the kinds (`mix`, from
+    glint's summary; the time per ray of a mix is the mean of the kinds' times weighed by their shares,
+    so the rate is the weighted harmonic mean), and on equal shares. Those sets run the kernel faster
+    than any render's rays do: neighbouring rays of one kind take the same branches (docs/benchmarks.md,
+    "What is measured", item 4)."""
+    ratios = [w / r for w, r in zip(wholes, replays)]
+    ratio, whole, replay = median(ratios), median(wholes), median(replays)
     kinds = {k: v for k, v in kernel.items() if k != 'render'}
     equal_mix = len(kinds) / sum(1 / r for r in kinds.values())
     kinds_mix = 1 / sum(mix[k] / kinds[k] for k in kinds) if mix else equal_mix
-    log(f'  kernel (glint BVH, 2 threads) on the render\'s own rays, replayed in its order: {replay:.2f} Mrays/s')
+    log(f'  kernel (glint BVH, 2 threads) on the render\'s own rays, replayed in its order: {replay:.2f} Mrays/s '
+        f'(rounds: ' + ', '.join(f'{r:.2f}' for r in replays) + ')')
     log(f'  kernel on its sets of one kind each: ' + ', '.join(f'{k} {v:.2f}' for k, v in kinds.items())
         + f' Mrays/s; on the render\'s mix of kinds {kinds_mix:.2f}'
         + (' (' + ', '.join(f'{k} {100 * v:.1f} %' for k, v in mix.items()) + ')' if mix else ' (equal shares)')
         + f'; on equal shares {equal_mix:.2f}')
-    log(f'  glint render ({render_label}): {whole:.2f} Mrays/s')
-    log(f'  whole-render / kernel on the same rays: {whole / replay:.2f} (target >= 0.6); '
-        f'on the sets of one kind: {whole / kinds_mix:.2f} with the render\'s mix, {whole / equal_mix:.2f} on equal shares')
+    log(f'  glint render ({render_label}): {whole:.2f} Mrays/s (rounds: ' + ', '.join(f'{w:.2f}' for w in wholes) + ')')
+    log(f'  whole-render / kernel on the same rays: {ratio:.2f} ({min(ratios):.2f}-{max(ratios):.2f} over '
+        f'{len(ratios)} rounds; target >= 0.6); on the sets of one kind: {whole / kinds_mix:.2f} with the '
+        f'render\'s mix, {whole / equal_mix:.2f} on equal shares')
     return {'kernel_mrays_per_s': kinds, 'kernel_render_rays_mrays_per_s': replay, 'render_ray_mix': mix,
             'kernel_mix_mrays_per_s': kinds_mix, 'kernel_equal_shares_mrays_per_s': equal_mix,
-            'whole_render_mrays_per_s': whole, 'ratio': whole / replay, 'ratio_kinds_mix': whole / kinds_mix,
+            'whole_render_mrays_per_s': whole, 'ratio': ratio, 'ratio_rounds': ratios,
+            'ratio_range': [min(ratios), max(ratios)], 'kernel_render_rays_rounds': replays,
+            'whole_render_rounds': wholes, 'ratio_kinds_mix': whole / kinds_mix,
             'ratio_equal_shares': whole / equal_mix, 'target': 0.6}
 
 
-def shading_overhead(cfg, cornell, cornell_mix=None):
+def shading_overhead(cfg, cornell_cfg, rounds):
     result = {}
+    if not os.path.exists(ACCEL):
+        log(f'\n== shading overhead: {ACCEL} is not built: skipped')
+        return {'skipped': 'glint_bench_accel not built'}
     if not os.path.exists(BUNNY):
         log(f'\n== shading overhead: {BUNNY} is absent: the bunny is skipped')
         result['bunny'] = {'skipped': f'{BUNNY} absent'}
-    elif not os.path.exists(ACCEL):
-        log(f'\n== shading overhead: {ACCEL} is not built: skipped')
-        result['bunny'] = {'skipped': 'glint_bench_accel not built'}
     else:
-        log('\n== shading overhead: the bunny (bench/accel kernel vs glint render, 2 threads)')
+        log(f'\n== shading overhead: the bunny (bench/accel kernel vs glint render, 2 threads, {rounds} rounds)')
         # bench/accel's rays: a camera at centre + (0.3, 0.4, 1) x 1.1 |extent| looking at the centre,
         # 512 x 128 rays over +-0.275 horizontally; diffuse bounces from the primary hits; shadow rays
         # to a point light at centre + (-0.5, 1.5, 0.5) |extent|. glint renders the same view with the
@@ -698,23 +727,26 @@ def shading_overhead(cfg, cornell, cornell_mix=None):
                     f'up: [0, 1, 0], fov: {fov}}}\n'
                     f'objects:\n  - {{type: mesh, file: {BUNNY}, material: {{type: matte, albedo: 0.5}}}}\n'
                     f'lights:\n  - {{type: point, position: {list(map(float, light))}, intensity: {size * size}}}\n')
-        kernel = kernel_rates('bunny', cfg['min_time'], render_scene=scene)
-        renders = [run([GLINT, 'render', scene, '--threads', '2', '--seed', str(1 + i), '-o',
-                        os.path.join(OUT, 'bunny.pfm')]) for i in range(3)]
-        whole = median([glint_rays_per_second(r.err) for r in renders])
-        result['bunny'] = overhead_result(kernel, whole,
+        kernel, replays, wholes, first = overhead_rounds(
+            'bunny', rounds, cfg['min_time'],
+            lambda i: run([GLINT, 'render', scene, '--threads', '2', '--seed', str(1 + i), '-o',
+                           os.path.join(OUT, 'bunny.pfm')]), render_scene=scene)
+        result['bunny'] = overhead_result(kernel, replays, wholes,
                                           f'path, max_depth 2, {w}x{h}, {cfg["spp"]} spp, 2 threads',
-                                          mix=glint_ray_mix(renders[0].err))
+                                          mix=glint_ray_mix(first.err))
     # Cornell: bench/accel replays the rays of a render of rtiow-cornell.yaml (its 400x400 at 16 spp,
     # one thread) and has sets of its camera rays, a cosine bounce from each hit and shadow rays to
-    # uniform points of its light; the whole-render rate is glint's on that scene (2 threads, from the
-    # pair's runs). Read as for the bunny (overhead_result).
-    if not os.path.exists(ACCEL) or cornell != cornell:  # NaN: the Cornell pair was not run
-        result['cornell'] = {'skipped': 'glint_bench_accel not built or the Cornell pair not run'}
-        return result
-    log('\n== shading overhead: the Cornell box (bench/accel kernel vs glint render, 2 threads)')
-    result['cornell'] = overhead_result(kernel_rates('cornell', cfg['min_time']), cornell,
-                                        'rtiow-cornell.yaml, 2 threads', mix=cornell_mix)
+    # uniform points of its light; the whole render is glint's on that scene at the Cornell pair's size
+    # and equal spp, 2 threads. Read as for the bunny (overhead_result).
+    log(f'\n== shading overhead: the Cornell box (bench/accel kernel vs glint render, 2 threads, {rounds} rounds)')
+    renderer = glint('examples/rtiow-cornell.yaml', cornell_cfg['size'], 2)
+    spp = cornell_cfg['equal']
+    kernel, replays, wholes, first = overhead_rounds(
+        'cornell', rounds, cfg['min_time'],
+        lambda i: renderer.render(spp, 1 + i, os.path.join(OUT, 'cornell-overhead.pfm')))
+    result['cornell'] = overhead_result(kernel, replays, wholes,
+                                        f'rtiow-cornell.yaml, {cornell_cfg["size"][0]}x{cornell_cfg["size"][1]}, '
+                                        f'{spp} spp, 2 threads', mix=glint_ray_mix(first.err))
     return result
 
 
@@ -763,16 +795,13 @@ def main():
         results['scenes']['rtiow-final'] = measure_scene(
             'rtiow', cfg, runs, rtiow('b1f'), glint('examples/rtiow-final.yaml', cfg['size'], 1),
             glint('examples/rtiow-final.yaml', cfg['size'], 2), bvh_peer=rtiow('b2bvh', takes_args=False))
-    cornell_rate = cornell_mix = None
     if 'cornell' in only:
         cfg = mode['cornell']
         results['scenes']['rtiow-cornell'] = measure_scene(
             'cornell', cfg, runs, rtiow('b2cbf'), glint('examples/rtiow-cornell.yaml', cfg['size'], 1),
             glint('examples/rtiow-cornell.yaml', cfg['size'], 2))
-        cornell_pair = results['scenes']['rtiow-cornell']['pairs']['b2cbf / glint 2t']
-        cornell_rate, cornell_mix = cornell_pair['glint_mrays_per_s'], cornell_pair['glint_ray_mix']
     if 'overhead' in only:
-        results['shading_overhead'] = shading_overhead(mode['bunny'], cornell_rate or float('nan'), cornell_mix)
+        results['shading_overhead'] = shading_overhead(mode['bunny'], mode['cornell'], runs)
 
     results['seconds'] = time.perf_counter() - t_start
     results['commands'] = COMMANDS
