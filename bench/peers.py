@@ -652,14 +652,13 @@ def overhead_rounds(mesh_name, rounds, min_time, render, render_scene=None):
     run falls on both sides of each round's ratio; one reading of each had the ratio move by a few per
     cent between runs of the same code. Returns the first round's kernel rates with 'render' replaced by
     the median replay rate, the rounds' replay rates, their render rates, and the first render's Run."""
-    replays, wholes, first = [], [], None
-    kernel = None
+    replays, wholes, kernel, first = [], [], None, None
     for i in range(rounds):
         rates = kernel_rates(mesh_name, min_time, render_scene, sets=(i == 0))
-        kernel = kernel or rates
-        replays.append(rates['render'])
         r = render(i)
-        first = first or r
+        if i == 0:
+            kernel, first = rates, r
+        replays.append(rates['render'])
         wholes.append(glint_rays_per_second(r.err))
     kernel = dict(kernel, render=median(replays))
     return kernel, replays, wholes, first
