@@ -22,6 +22,7 @@ one run, alternating the two renderers (the machine is shared and noisy; medians
 docs/benchmarks.md explains the method. Results: build/bench-peers/results.json.
 """
 import argparse
+import hashlib
 import json
 import math
 import os
@@ -199,6 +200,15 @@ def rtiow(binary, takes_args=True):
 
 # ---------------------------------------------------------------------------------------------------
 # Peers and references
+
+def file_digest(path):
+    """The first 16 hex digits of a file's sha256."""
+    h = hashlib.sha256()
+    with open(path, 'rb') as f:
+        for block in iter(lambda: f.read(1 << 20), b''):
+            h.update(block)
+    return h.hexdigest()[:16]
+
 
 def newest_mtime(folder):
     return max(os.path.getmtime(os.path.join(d, f)) for d, _, files in os.walk(folder) for f in files)
@@ -772,7 +782,13 @@ def main():
     os.makedirs(OUT, exist_ok=True)
     t_start = time.perf_counter()
     build_peers()
-    results = {'mode': args.mode, 'runs': runs, 'glint': GLINT, 'scenes': {}}
+    # Which binaries ran, by content: a copy made before a rebuild finished (or an experiment's build
+    # left in build/release) looks like any other glint, and once a note's figures came from one.
+    binaries = {name: file_digest(path) for name, path in (('glint', GLINT), ('glint_bench_accel', ACCEL))
+                if os.path.exists(path)}
+    log('binaries (sha256, first 16 hex digits): '
+        + ', '.join(f'{name} {digest}' for name, digest in binaries.items()))
+    results = {'mode': args.mode, 'runs': runs, 'glint': GLINT, 'binaries_sha256': binaries, 'scenes': {}}
 
     if 'smallpt' in only:
         cfg = mode['smallpt']
