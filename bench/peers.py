@@ -660,21 +660,20 @@ def overhead_rounds(mesh_name, rounds, min_time, render, render_scene=None):
     (the sets of one kind only in the first, for the older readings) and then one glint render
     (`render(i)`, a finished Run). Alternating, as the pairs are read, so that the machine's drift during a
     run falls on both sides of each round's ratio; one reading of each had the ratio move by a few per
-    cent between runs of the same code. Returns the first round's kernel rates with 'render' replaced by
-    the median replay rate, the rounds' replay rates, their render rates, and the first render's Run."""
-    replays, wholes, kernel, first = [], [], None, None
+    cent between runs of the same code. Returns the kernel's rates on its sets of one kind (the first
+    round's), the rounds' replay rates, their render rates, and the first render's Run."""
+    replays, wholes, sets, first = [], [], None, None
     for i in range(rounds):
         rates = kernel_rates(mesh_name, min_time, render_scene, sets=(i == 0))
         r = render(i)
         if i == 0:
-            kernel, first = rates, r
+            sets, first = {k: v for k, v in rates.items() if k != 'render'}, r
         replays.append(rates['render'])
         wholes.append(glint_rays_per_second(r.err))
-    kernel = dict(kernel, render=median(replays))
-    return kernel, replays, wholes, first
+    return sets, replays, wholes, first
 
 
-def overhead_result(kernel, replays, wholes, render_label, mix=None):
+def overhead_result(kinds, replays, wholes, render_label, mix=None):
     """Prints and returns one scene's shading overhead: the whole-render rate over the kernel's on the
     same rays, round by round (overhead_rounds); the target is read on the median of the rounds' ratios.
     The kernel's rate is bench/accel's replay of the render's own rays in the order the render traced
@@ -687,7 +686,6 @@ def overhead_result(kernel, replays, wholes, render_label, mix=None):
     "What is measured", item 4)."""
     ratios = [w / r for w, r in zip(wholes, replays)]
     ratio, whole, replay = median(ratios), median(wholes), median(replays)
-    kinds = {k: v for k, v in kernel.items() if k != 'render'}
     equal_mix = len(kinds) / sum(1 / r for r in kinds.values())
     kinds_mix = 1 / sum(mix[k] / kinds[k] for k in kinds) if mix else equal_mix
     log(f'  kernel (glint BVH, 2 threads) on the render\'s own rays, replayed in its order: {replay:.2f} Mrays/s '
@@ -736,11 +734,11 @@ def shading_overhead(cfg, cornell_cfg, rounds):
                     f'up: [0, 1, 0], fov: {fov}}}\n'
                     f'objects:\n  - {{type: mesh, file: {BUNNY}, material: {{type: matte, albedo: 0.5}}}}\n'
                     f'lights:\n  - {{type: point, position: {list(map(float, light))}, intensity: {size * size}}}\n')
-        kernel, replays, wholes, first = overhead_rounds(
+        sets, replays, wholes, first = overhead_rounds(
             'bunny', rounds, cfg['min_time'],
             lambda i: run([GLINT, 'render', scene, '--threads', '2', '--seed', str(1 + i), '-o',
                            os.path.join(OUT, 'bunny.pfm')]), render_scene=scene)
-        result['bunny'] = overhead_result(kernel, replays, wholes,
+        result['bunny'] = overhead_result(sets, replays, wholes,
                                           f'path, max_depth 2, {w}x{h}, {cfg["spp"]} spp, 2 threads',
                                           mix=glint_ray_mix(first.err))
     # Cornell: bench/accel replays the rays of a render of rtiow-cornell.yaml (its 400x400 at 16 spp,
@@ -750,10 +748,10 @@ def shading_overhead(cfg, cornell_cfg, rounds):
     log(f'\n== shading overhead: the Cornell box (bench/accel kernel vs glint render, 2 threads, {rounds} rounds)')
     renderer = glint('examples/rtiow-cornell.yaml', cornell_cfg['size'], 2)
     spp = cornell_cfg['equal']
-    kernel, replays, wholes, first = overhead_rounds(
+    sets, replays, wholes, first = overhead_rounds(
         'cornell', rounds, cfg['min_time'],
         lambda i: renderer.render(spp, 1 + i, os.path.join(OUT, 'cornell-overhead.pfm')))
-    result['cornell'] = overhead_result(kernel, replays, wholes,
+    result['cornell'] = overhead_result(sets, replays, wholes,
                                         f'rtiow-cornell.yaml, {cornell_cfg["size"][0]}x{cornell_cfg["size"][1]}, '
                                         f'{spp} spp, 2 threads', mix=glint_ray_mix(first.err))
     return result
