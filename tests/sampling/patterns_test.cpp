@@ -3,9 +3,11 @@
 // properties of the low-discrepancy patterns, purity and per-pixel variation.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <map>
 #include <set>
 #include <string>
@@ -590,6 +592,33 @@ TEST(SamplePatterns, AStreamReadsTheBatchedDimensionsAndAsksForTheOthers) {
     for (std::uint32_t d = 0; d < kBatchedDimensions + 2; ++d) {
         EXPECT_EQ(alone.next_2d(), sampler->sample_2d(key, kFirstIntegratorDimension + d));
     }
+}
+
+TEST(SamplePatterns, AStreamDrawsThePatternsRandomDimensionsAsThePatternDoes) {
+    // A stream draws a pattern's points from random_from() on itself, without asking the pattern: they
+    // must be the pattern's own, in every pattern, in 1-D and 2-D, for samples below and above the count.
+    std::set<std::string> declaring;
+    for (const std::string& name : kAllPatterns) {
+        SCOPED_TRACE(name);
+        const auto sampler = make_sampler(name, 16);
+        const std::uint32_t from = sampler->random_from();
+        if (from == std::numeric_limits<std::uint32_t>::max()) {
+            continue;
+        }
+        declaring.insert(name);
+        for (const std::uint32_t sample : {0u, 5u, 15u, 40u}) {
+            const SampleHashes key(SampleKey{7, 11, 13, sample});
+            const std::uint32_t first = std::max(from, kFirstIntegratorDimension);
+            SampleStream stream(*sampler, key, first);
+            for (std::uint32_t d = first; d < first + 12; d += 2) {
+                EXPECT_EQ(stream.next_2d(), sampler->sample_2d(key, d));
+                EXPECT_EQ(stream.next_1d(), sampler->sample_1d(key, d + 1));
+            }
+        }
+    }
+    // Not a test of nothing: the two patterns that declare it.
+    EXPECT_EQ(declaring, (std::set<std::string>{"random", "sobol"}));
+    EXPECT_EQ(make_sampler("sobol", 16)->random_from(), SobolSampler::kStratifiedDimensions);
 }
 
 TEST(SamplePatterns, FilmAndLensDimensionsAreUncorrelated) {

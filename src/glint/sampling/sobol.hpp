@@ -28,7 +28,8 @@ class SobolSampler final : public Sampler {
     // The render loop's PixelHashes holds these dimensions' seeds (hash.hpp).
     static_assert(PixelHashes::kDimensions == kStratifiedDimensions);
 
-    explicit SobolSampler(std::uint32_t samples_per_pixel) : n_(std::max(1u, samples_per_pixel)) {}
+    explicit SobolSampler(std::uint32_t samples_per_pixel)
+        : Sampler(kStratifiedDimensions), n_(std::max(1u, samples_per_pixel)) {}
     std::uint32_t samples_per_pixel() const override { return n_; }
     bool extendable() const override { return true; }  // the index is only scrambled, never wrapped
     Point2 sample_2d(const SampleHashes& key, std::uint32_t dimension) const override;
