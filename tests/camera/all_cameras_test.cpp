@@ -1,6 +1,8 @@
 // Properties every camera in the table must have.
 #include <gtest/gtest.h>
 
+#include <vector>
+
 #include "camera/camera_test_util.hpp"
 
 namespace glint {
@@ -33,6 +35,29 @@ TEST(AllCameras, LookingStraightDownOrUpWithTheDefaultUpGivesFiniteUnitRays) {
                 }
             }
             EXPECT_GE(seen, 6);  // only a fisheye's corners may see nothing
+        }
+    }
+}
+
+TEST(AllCameras, RaysMadeTogetherAreTheRaysMadeOneByOne) {
+    // The render loop asks for a batch's rays together (Camera::generate_rays); a camera that overrides it
+    // (the pinhole's loop without virtual calls, the thin lens's AVX2 lanes) must give generate_ray's bits.
+    for (const CameraEntry& entry : camera_table()) {
+        SCOPED_TRACE(entry.name);
+        const Scene scene =
+            test::camera_scene("{type: " + entry.name + ", eye: [1, 2, 3], look_at: [0, 0, -1]" +
+                               required_keys(entry.name) + "}");
+        std::vector<Point2> film, lens;
+        for (int i = 0; i < 7; ++i) {
+            film.push_back({3.5 + 27.25 * i, 99.9 - 13.125 * i});
+            lens.push_back({0.125 * i, 0.9 - 0.11 * i});
+        }
+        std::vector<Ray> together(film.size());
+        scene.view.camera->generate_rays(film, lens, together);
+        for (std::size_t i = 0; i < film.size(); ++i) {
+            const Ray alone = scene.view.camera->generate_ray(film[i], lens[i]);
+            EXPECT_EQ(together[i].origin, alone.origin) << i;
+            EXPECT_EQ(together[i].direction, alone.direction) << i;
         }
     }
 }

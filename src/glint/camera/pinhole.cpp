@@ -11,6 +11,13 @@ Ray PinholeCamera::generate_ray(Point2 film, Point2) const {
                                  view_.view_distance);
 }
 
+void PinholeCamera::generate_rays(std::span<const Point2> film, std::span<const Point2> lens,
+                                  std::span<Ray> rays) const {
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+        rays[i] = PinholeCamera::generate_ray(film[i], lens[i]);
+    }
+}
+
 std::unique_ptr<Camera> PinholeCamera::create(Params& params, const BuildContext&, FilmSize film) {
     return std::make_unique<PinholeCamera>(read_view_params(params, film), film);
 }

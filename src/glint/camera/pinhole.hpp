@@ -12,6 +12,10 @@ class PinholeCamera final : public Camera {
   public:
     PinholeCamera(const ViewParams& view, FilmSize film) : view_(view), film_(film) {}
     Ray generate_ray(Point2 film, Point2 lens) const override;
+    // The base's loop with generate_ray inline instead of a virtual call per ray: the same bits, 0.6 % of
+    // the Cornell box's instructions (bench/ab.py: 0.987 of its time, smallpt's scene 0.994).
+    void generate_rays(std::span<const Point2> film, std::span<const Point2> lens,
+                       std::span<Ray> rays) const override;
     bool uses_lens() const override { return false; }
 
     static std::unique_ptr<Camera> create(Params& params, const BuildContext& context, FilmSize film);
