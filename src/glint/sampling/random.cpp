@@ -5,7 +5,7 @@
 namespace glint {
 
 Point2 RandomSampler::sample_2d(const SampleHashes& key, std::uint32_t dimension) const {
-    return unit_pair(key.sample_bits(dimension));
+    return random_point(key, dimension);
 }
 
 }  // namespace glint

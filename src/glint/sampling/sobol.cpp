@@ -250,7 +250,7 @@ __attribute__((target("avx2,fma"))) void integrator_points_avx2(const PixelHashe
 
 Point2 SobolSampler::sample_2d(const SampleHashes& key, std::uint32_t dimension) const {
     if (dimension >= kStratifiedDimensions) {
-        return unit_pair(key.sample_bits(dimension));  // the random pattern's point
+        return random_point(key, dimension);
     }
     return scrambled_point(reversed_point(key, dimension));
 }
@@ -267,7 +267,7 @@ FilmAndLens SobolSampler::sample_film_and_lens(const SampleHashes& key) const {
 double SobolSampler::sample_1d(const SampleHashes& key, std::uint32_t dimension) const {
     // sample_2d's x without its y.
     if (dimension >= kStratifiedDimensions) {
-        return unit_pair(key.sample_bits(dimension)).x;
+        return random_point(key, dimension).x;
     }
     const ReversedPoint point = reversed_point(key, dimension);
     return bits_to_unit(owen_scramble_reversed(point.x, static_cast<std::uint32_t>(point.scramble_seeds)));
