@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "glint/core/hash.hpp"
 #include "glint/geometry/sphere.hpp"
@@ -87,15 +88,20 @@ std::optional<SphereCap> cap_from(const AreaLight& light, const Sphere& sphere, 
 
 // The mixture's solid-angle density at `ref` of the direction wi, which meets the sphere first at
 // `point` with outward unit normal `normal`.
+// `area_to_solid_angle` is distance² / |cos θ| at the point, the factor that turns the cap's density
+// per unit area into one per steradian (0 when the point is seen edge-on: then no density of the cap).
+double cap_mixture_pdf(const SphereCap& cap, const Vec3& ref, const Vec3& wi, const Vec3& point,
+                       const Vec3& normal, double area_to_solid_angle) {
+    const double cone = cap.sphere->pdf_seen_from(ref, wi, point, normal);
+    const double in_cap = dot(normal, cap.frame.n) >= cap.cos_max ? cap.pdf_area * area_to_solid_angle : 0;
+    return LightVisibility::kCapShare * in_cap + (1 - LightVisibility::kCapShare) * cone;
+}
+
 double cap_mixture_pdf(const SphereCap& cap, const Vec3& ref, const Vec3& wi, const Vec3& point,
                        const Vec3& normal) {
-    const double cone = cap.sphere->pdf_seen_from(ref, wi, point, normal);
-    double in_cap = 0;
     const double cos_light = std::abs(dot(wi, normal));
-    if (dot(normal, cap.frame.n) >= cap.cos_max && cos_light > 0) {
-        in_cap = cap.pdf_area * length_squared(point - ref) / cos_light;  // area to solid angle
-    }
-    return LightVisibility::kCapShare * in_cap + (1 - LightVisibility::kCapShare) * cone;
+    return cap_mixture_pdf(cap, ref, wi, point, normal,
+                           cos_light > 0 ? length_squared(point - ref) / cos_light : 0);
 }
 
 }  // namespace
@@ -184,29 +190,40 @@ std::optional<LightSample> LightVisibility::sample(std::size_t index, const Ligh
         return light.sample(at, u);
     }
     // One sample of the mixture: the cap for u.x < kCapShare, the cone otherwise, each with u.x
-    // stretched back to [0, 1) so that a stratified u stays stratified within each.
+    // stretched back to [0, 1) so that a stratified u stays stratified within each. Stretched by a
+    // product, not a division: the first step of the sample's chain. (u.x, a multiple of 2⁻³², stays
+    // below 1 either way.)
+    constexpr double kToCap = 1 / kCapShare;
+    constexpr double kToCone = 1 / (1 - kCapShare);
     SeenSample seen;
     if (u.x < kCapShare) {
-        const Vec3 normal = cap->frame.to_world(square_to_uniform_cone({u.x / kCapShare, u.y}, cap->cos_max));
+        const Vec3 normal = cap->frame.to_world(square_to_uniform_cone({u.x * kToCap, u.y}, cap->cos_max));
         seen.point = cap->sphere->center() + cap->sphere->radius() * normal;
         seen.normal = normal;
         const Vec3 to_point = seen.point - at.point;
-        const double distance = length(to_point);
-        if (!(distance > 0)) {
-            return std::nullopt;
+        const double d2 = length_squared(to_point);
+        if (!(d2 >= std::numeric_limits<double>::min() && d2 <= std::numeric_limits<double>::max())) {
+            return std::nullopt;  // at the point, or so near or far that 1/d² is not finite
         }
         // A point on the far side of the sphere gets no light through it: a one-sided emitter sends
         // none that way, and the shadow ray of a two-sided one meets the near side.
-        seen.wi = to_point / distance;
+        // wi and d² / |cos θ| (= d³ / |n · (point − ref)|) from √(d²), 1/d² and one division side by
+        // side, as seen_from (shape.hpp) does, rather than each waiting for the last.
+        const double d = std::sqrt(d2);
+        const double inverse_d2 = 1 / d2;
+        const double projected = std::abs(dot(normal, to_point));  // d |cos θ|
+        seen.wi = to_point * (d * inverse_d2);
+        seen.pdf_solid_angle = cap_mixture_pdf(*cap, at.point, seen.wi, seen.point, seen.normal,
+                                               projected > 0 ? d2 / projected * d : 0);
     } else {
         const std::optional<SeenSample> cone =
-            cap->sphere->sample_seen_from(at.point, {(u.x - kCapShare) / (1 - kCapShare), u.y});
+            cap->sphere->sample_seen_from(at.point, {(u.x - kCapShare) * kToCone, u.y});
         if (!cone) {
             return std::nullopt;
         }
         seen = *cone;
+        seen.pdf_solid_angle = cap_mixture_pdf(*cap, at.point, seen.wi, seen.point, seen.normal);
     }
-    seen.pdf_solid_angle = cap_mixture_pdf(*cap, at.point, seen.wi, seen.point, seen.normal);
     return cap->light->sample_of(seen);
 }
 
