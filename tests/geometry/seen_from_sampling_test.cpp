@@ -137,6 +137,25 @@ TEST(SeenFromSampling, SphereFromOutsideSamplesOnlyItsVisibleCone) {
     EXPECT_NEAR(1 / s->pdf_solid_angle, sphere_solid_angle(0.9, length(sphere.center() - ref)), 1e-12);
 }
 
+// The density a cone sample carries is the very double pdf_seen_from gives for its direction, near the
+// sphere and far from it, so that the MIS weights of a light sample and of a BSDF sample that meets the
+// light are computed from the same value.
+TEST(SeenFromSampling, ASphereConeSampleCarriesTheDensityPdfSeenFromGives) {
+    const Sphere sphere({0.3, 2, -0.4}, 0.9);
+    for (const Vec3& ref :
+         {Vec3{0.1, 0, 0.2}, Vec3{0.3, 0.95, -0.4}, Vec3{40, -70, 25}, Vec3{1e4, 3e3, -2e4}}) {
+        for (const Point2 u : {Point2{0.4, 0.9}, Point2{0.01, 0.3}, Point2{0.999, 0.6}}) {
+            const std::optional<SeenSample> s = sphere.sample_seen_from(ref, u);
+            ASSERT_TRUE(s);
+            EXPECT_EQ(s->pdf_solid_angle, sphere.pdf_seen_from(ref, s->wi, s->point, s->normal));
+            // The solid angle 2π (1 − cos θ) as 2π sin² θ / (1 + cos θ), which keeps its digits in
+            // the far reference points' narrow cones (sphere_solid_angle loses half of them there).
+            const double sin2 = sqr(0.9) / length_squared(sphere.center() - ref);
+            EXPECT_NEAR(s->pdf_solid_angle * (2 * kPi * sin2 / (1 + std::sqrt(1 - sin2))), 1.0, 1e-14);
+        }
+    }
+}
+
 TEST(SeenFromSampling, SphereFromInsideSamplesByArea) {
     const Sphere sphere({0.3, 2, -0.4}, 0.9);
     check_seen_from(sphere, {0.5, 1.7, 0}, "inside the sphere");

@@ -74,6 +74,16 @@ namespace {
 double one_minus_cos_max(double sin2_max) {
     return sin2_max / (1 + safe_sqrt(1 - sin2_max));
 }
+
+// The cone's density per steradian at distance² d2 from the centre of a sphere of radius R (1/R given):
+// 1 / (2π (1 − cos θ_max)) = (1 + cos θ_max) / (2π sin² θ_max), with sin² θ_max = R² / d² and
+// cos θ_max = √(d² − R²) / d, is (d² + d √(d² − R²)) / (2π R²). Two square roots side by side and no
+// division, where 1 / (2π one_minus_cos_max(R² / d²)) took a division, a square root and two more
+// divisions one after another, and every light sample of a sphere with a learnt cap waited for them
+// (LightVisibility's mixture density). A cone sample and pdf_seen_from both return it, to the bit.
+double cone_density(double d2, double radius, double inverse_radius) {
+    return (d2 + std::sqrt(d2) * safe_sqrt(d2 - sqr(radius))) * (sqr(inverse_radius) * (0.5 * kInvPi));
+}
 }  // namespace
 
 std::optional<SeenSample> Sphere::sample_seen_from(const Vec3& ref, Point2 u) const {
@@ -101,17 +111,11 @@ std::optional<SeenSample> Sphere::sample_seen_from(const Vec3& ref, Point2 u) co
     if (!(distance > 0)) {
         return std::nullopt;
     }
-    return SeenSample{point, normal, to_point / distance, 1 / (2 * kPi * omc_max)};
+    return SeenSample{point, normal, to_point / distance, cone_density(d2, radius_, inverse_radius_)};
 }
 
 double Sphere::cone_pdf(const Vec3& ref) const {
-    // 1 / (2π (1 − cos θ_max)) = (1 + cos θ_max) / (2π sin² θ_max), with sin² θ_max = R² / d² and
-    // cos θ_max = √(d² − R²) / d: (d² + d √(d² − R²)) / (2π R²). Two square roots side by side and no
-    // division, where 1 / (2π one_minus_cos_max(R² / d²)) took a division, a square root and two more
-    // divisions one after another, and every light sample of a sphere with a learnt cap waited for them
-    // (LightVisibility's mixture density).
-    const double d2 = length_squared(center_ - ref);
-    return (d2 + std::sqrt(d2) * safe_sqrt(d2 - sqr(radius_))) * (sqr(inverse_radius_) * (0.5 * kInvPi));
+    return cone_density(length_squared(center_ - ref), radius_, inverse_radius_);
 }
 
 double Sphere::pdf_seen_from(const Vec3& ref, const Vec3& wi, const Hit& on_shape) const {
